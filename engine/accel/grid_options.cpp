@@ -1,0 +1,58 @@
+// Parsing --grid's argument.
+#include <charconv>
+#include <string>
+
+#include "accel/grid.h"
+#include "accel/grid_resolution.h"
+#include "core/error.h"
+
+namespace prism {
+namespace {
+
+[[noreturn]] void badGrid(std::string_view text, const std::string &why) {
+    throw Error("--grid " + std::string(text) + ": " + why +
+                " (expected auto, off, N or NxNyNz with counts 1.." +
+                std::to_string(kMaxGridAxisCells) + ")");
+}
+
+int parseCount(std::string_view all, std::string_view part) {
+    int value = 0;
+    auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+    if (part.empty() || ec != std::errc() || end != part.data() + part.size())
+        badGrid(all, std::string(part).append(" is not a whole number"));
+    if (value < 1 || value > kMaxGridAxisCells)
+        badGrid(all, std::to_string(value) + " cells is out of range");
+    return value;
+}
+
+} // namespace
+
+GridOptions parseGridOption(std::string_view text) {
+    GridOptions options;
+    if (text == "auto")
+        return options;
+    if (text == "off") {
+        options.mode = GridOptions::Mode::Off;
+        return options;
+    }
+    options.mode = GridOptions::Mode::Fixed;
+    size_t x1 = text.find('x');
+    if (x1 == std::string_view::npos) {
+        options.resolution = glm::ivec3(parseCount(text, text));
+    } else {
+        size_t x2 = text.find('x', x1 + 1);
+        if (x2 == std::string_view::npos)
+            badGrid(text, "give one count or three");
+        options.resolution = {parseCount(text, text.substr(0, x1)),
+                              parseCount(text, text.substr(x1 + 1, x2 - x1 - 1)),
+                              parseCount(text, text.substr(x2 + 1))};
+    }
+    uint64_t cells = uint64_t(options.resolution.x) * uint64_t(options.resolution.y) *
+                     uint64_t(options.resolution.z);
+    if (cells > kMaxGridCells)
+        badGrid(text, std::to_string(cells) + " cells is more than " +
+                          std::to_string(kMaxGridCells));
+    return options;
+}
+
+} // namespace prism

@@ -1,0 +1,18 @@
+#pragma once
+// The CPU twin of the shader's 3D-DDA (Amanatides & Woo 1987), in double: visits the cells a
+// ray crosses, in order, with the ray's parametric range inside each. Tests use it to check
+// that the grid lists every primitive where a ray can meet it.
+#include <functional>
+
+#include <glm/glm.hpp>
+
+#include "accel/grid.h"
+
+namespace prism {
+
+// Calls visit(cellIndex, tEnter, tExit) for each cell the ray (origin + t * dir, 0 <= t <
+// tMax) crosses, nearest first, until visit returns false or the ray leaves the grid.
+void walkGrid(const Grid &grid, const glm::dvec3 &origin, const glm::dvec3 &dir, double tMax,
+              const std::function<bool(uint32_t cell, double tEnter, double tExit)> &visit);
+
+} // namespace prism

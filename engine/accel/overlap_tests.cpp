@@ -1,0 +1,53 @@
+#include "accel/overlap_tests.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace prism {
+
+bool sphereOverlapsBox(const glm::dvec3 &center, double radius, const glm::dvec3 &boxMin,
+                       const glm::dvec3 &boxMax) {
+    glm::dvec3 nearest = glm::clamp(center, boxMin, boxMax);
+    glm::dvec3 d = center - nearest;
+    return glm::dot(d, d) <= radius * radius;
+}
+
+namespace {
+
+// Projects the triangle (relative to the box centre) and the box onto `axis`; true when the
+// two intervals are disjoint. A zero axis (parallel edges) separates nothing.
+bool separatedOnAxis(const glm::dvec3 &axis, const glm::dvec3 (&v)[3], const glm::dvec3 &half) {
+    double p0 = glm::dot(axis, v[0]), p1 = glm::dot(axis, v[1]), p2 = glm::dot(axis, v[2]);
+    double r = half.x * std::abs(axis.x) + half.y * std::abs(axis.y) + half.z * std::abs(axis.z);
+    return std::min({p0, p1, p2}) > r || std::max({p0, p1, p2}) < -r;
+}
+
+} // namespace
+
+bool triangleOverlapsBox(const glm::dvec3 &p0, const glm::dvec3 &p1, const glm::dvec3 &p2,
+                         const glm::dvec3 &boxMin, const glm::dvec3 &boxMax) {
+    glm::dvec3 center = 0.5 * (boxMin + boxMax), half = 0.5 * (boxMax - boxMin);
+    const glm::dvec3 v[3] = {p0 - center, p1 - center, p2 - center};
+    // Box face normals: the triangle's bounding box against the box.
+    for (int a = 0; a < 3; ++a) {
+        double lo = std::min({v[0][a], v[1][a], v[2][a]});
+        double hi = std::max({v[0][a], v[1][a], v[2][a]});
+        if (lo > half[a] || hi < -half[a])
+            return false;
+    }
+    const glm::dvec3 edges[3] = {v[1] - v[0], v[2] - v[1], v[0] - v[2]};
+    // The triangle's plane.
+    if (separatedOnAxis(glm::cross(edges[0], edges[1]), v, half))
+        return false;
+    // Edge x box-axis cross products.
+    for (const glm::dvec3 &e : edges)
+        for (int a = 0; a < 3; ++a) {
+            glm::dvec3 unit(0.0);
+            unit[a] = 1.0;
+            if (separatedOnAxis(glm::cross(e, unit), v, half))
+                return false;
+        }
+    return true;
+}
+
+} // namespace prism

@@ -1,0 +1,22 @@
+#pragma once
+// Reading any image OpenImageIO understands as float pixels, for tests and tools.
+#include "io/image_metadata.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace prism {
+
+struct LoadedImage {
+    int width = 0, height = 0, channels = 0;
+    std::vector<float> pixels; // width*height*channels, interleaved, row 0 = top;
+                               // 8-bit files come back as code/255 (no colour conversion)
+    std::vector<std::string> channelNames;
+    ImageMetadata metadata; // every string, float and int attribute the file carries
+};
+
+// Throws prism::Error naming the path and OIIO's error text.
+LoadedImage readImage(const std::filesystem::path &path);
+
+} // namespace prism

@@ -1,0 +1,30 @@
+#pragma once
+// Write-then-rename: output goes to a hidden temporary file beside the target, which
+// replaces the target in one rename(2) (atomic on POSIX) only once it is complete.
+#include <filesystem>
+
+namespace prism {
+
+class StagedFile {
+public:
+    // Temporary path: "<dir>/.<stem>.tmp-<pid><ext>", keeping the extension so tools that
+    // pick a format by name still see it.
+    explicit StagedFile(std::filesystem::path target);
+    ~StagedFile(); // removes the temporary file unless commit() succeeded
+    StagedFile(const StagedFile &) = delete;
+    StagedFile &operator=(const StagedFile &) = delete;
+
+    const std::filesystem::path &tempPath() const { return temp_; }
+    const std::filesystem::path &target() const { return target_; }
+
+    // Flushes the temporary file to disk, then renames it over the target.
+    // Throws prism::Error naming the target; the temporary file is removed either way.
+    void commit();
+
+private:
+    std::filesystem::path target_;
+    std::filesystem::path temp_;
+    bool committed_ = false;
+};
+
+} // namespace prism

@@ -1,0 +1,111 @@
+#include "reference/surface_reference.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "reference/intersect_reference.h"
+#include "shared/gpu_types.h"
+
+namespace prism::reference {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Texel index of `base` wrapped into [0, size): floor-modulo, safe for any finite base.
+int wrapIndex(double base, int size) {
+    double wrapped = base - double(size) * std::floor(base / double(size));
+    return std::clamp(int(wrapped), 0, size - 1);
+}
+
+} // namespace
+
+Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit) {
+    // Hit points are rebuilt from the primitive (not origin + t * dir) so their error is
+    // relative to |P|, which is what the relative ray offset assumes.
+    Surface s{};
+    switch (hit.kind) {
+    case HitKind::Sphere: {
+        const Sphere &sphere = scene.spheres[hit.index];
+        glm::dvec3 center(sphere.center);
+        glm::dvec3 n = glm::normalize(ray.origin + hit.t * ray.dir - center);
+        s.position = center + double(sphere.radius) * n;
+        s.geometricNormal = n;
+        s.shadingNormal = n;
+        s.uv = glm::dvec2(0.5 + std::atan2(n.z, n.x) / (2.0 * kPi),
+                          0.5 + std::asin(std::clamp(n.y, -1.0, 1.0)) / kPi);
+        s.material = sphere.material;
+        break;
+    }
+    case HitKind::Plane: {
+        const Plane &plane = scene.planes[hit.index];
+        PlaneEquation eq = planeEquation(plane);
+        glm::dvec3 p = ray.origin + hit.t * ray.dir;
+        s.position = p - (glm::dot(eq.normal, p) - eq.offset) * eq.normal; // project onto it
+        s.geometricNormal = eq.normal;
+        s.shadingNormal = eq.normal;
+        s.uv = planeUV(s.position, eq.normal);
+        s.material = plane.material;
+        break;
+    }
+    case HitKind::None:
+        break; // nothing was hit: no surface
+    case HitKind::Triangle: {
+        const Triangle &tri = scene.triangles[hit.index];
+        double b1 = hit.b12.x, b2 = hit.b12.y, b0 = 1.0 - b1 - b2;
+        glm::dvec3 p0(tri.p[0]), p1(tri.p[1]), p2(tri.p[2]);
+        s.position = b0 * p0 + b1 * p1 + b2 * p2;
+        s.geometricNormal = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+        s.shadingNormal = s.geometricNormal;
+        s.uv = glm::dvec2(b1, b2);
+        if (tri.hasNormals)
+            s.shadingNormal = glm::normalize(b0 * glm::dvec3(tri.n[0]) + b1 * glm::dvec3(tri.n[1]) +
+                                             b2 * glm::dvec3(tri.n[2]));
+        if (tri.hasUVs)
+            s.uv = b0 * glm::dvec2(tri.uv[0]) + b1 * glm::dvec2(tri.uv[1]) +
+                   b2 * glm::dvec2(tri.uv[2]);
+        s.material = tri.material;
+        break;
+    }
+    }
+    return s;
+}
+
+glm::dvec2 planeUV(glm::dvec3 p, glm::dvec3 n) {
+    glm::dvec3 a = glm::abs(n);
+    glm::dvec3 axis = (a.x <= a.y && a.x <= a.z) ? glm::dvec3(1, 0, 0)
+                                                 : (a.y <= a.z ? glm::dvec3(0, 1, 0)
+                                                               : glm::dvec3(0, 0, 1));
+    glm::dvec3 a1 = glm::normalize(glm::cross(n, axis));
+    glm::dvec3 a2 = glm::cross(n, a1);
+    return glm::dvec2(glm::dot(p, a1), glm::dot(p, a2));
+}
+
+glm::dvec3 textureColor(const Texture &texture, glm::dvec2 uv) {
+    int w = texture.width, h = texture.height;
+    if (w <= 0 || h <= 0 || texture.texels.size() < size_t(w) * size_t(h) ||
+        !std::isfinite(uv.x) || !std::isfinite(uv.y))
+        return glm::dvec3(0.0); // nothing sensible to look up
+    // Texel centres sit at half-integers; bilinear weights from the fractional part.
+    glm::dvec2 xy = glm::dvec2(uv.x * double(w), uv.y * double(h)) - 0.5;
+    glm::dvec2 base = glm::floor(xy);
+    glm::dvec2 f = xy - base;
+    int x0 = wrapIndex(base.x, w), y0 = wrapIndex(base.y, h);
+    int x1 = (x0 + 1) % w, y1 = (y0 + 1) % h;
+    // Bottom-based rows map to stored rows h-1-y.
+    size_t rowA = size_t(h - 1 - y0) * size_t(w), rowB = size_t(h - 1 - y1) * size_t(w);
+    auto texel = [&](size_t row, int x) { return glm::dvec4(texture.texels[row + size_t(x)]); };
+    glm::dvec4 c00 = texel(rowA, x0), c10 = texel(rowA, x1);
+    glm::dvec4 c01 = texel(rowB, x0), c11 = texel(rowB, x1);
+    return glm::dvec3(glm::mix(glm::mix(c00, c10, f.x), glm::mix(c01, c11, f.x), f.y));
+}
+
+glm::dvec3 offsetOrigin(glm::dvec3 position, glm::dvec3 facingNormal, glm::dvec3 dir) {
+    // The same relative offset as the shader (shared/gpu_types.h), so both agree on which
+    // nearby surfaces a new ray can see.
+    glm::dvec3 a = glm::abs(position);
+    double eps = std::max(std::max(a.x, std::max(a.y, a.z)), double(PRISM_OFFSET_FLOOR)) *
+                 double(PRISM_OFFSET_RELATIVE);
+    return position + (glm::dot(dir, facingNormal) >= 0.0 ? eps : -eps) * facingNormal;
+}
+
+} // namespace prism::reference

@@ -1,0 +1,37 @@
+#pragma once
+// A hit turned into what shading needs (shaders/surface.glsl in double): position rebuilt from
+// the primitive, normals, texture coordinates, material; texture lookups; ray offsets.
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "reference/camera_model.h"
+#include "reference/scene_query.h"
+#include "scene/scene.h"
+
+namespace prism::reference {
+
+struct Surface {
+    glm::dvec3 position;
+    glm::dvec3 geometricNormal; // the primitive's own: sphere outward, plane given, triangle ABC
+    glm::dvec3 shadingNormal;   // interpolated vertex normal where present, else geometricNormal
+    glm::dvec2 uv;
+    uint32_t material;
+};
+
+// `hit` must be a hit of `ray` in `scene` (kind != None).
+Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit);
+
+// Plane texture axes: a1 = normalize(n x e) with e the world axis least aligned with n (x before
+// y before z on ties), a2 = n x a1; (u, v) = (P . a1, P . a2).
+glm::dvec2 planeUV(glm::dvec3 p, glm::dvec3 n);
+
+// Bilinear lookup with wrap-around; v = 0 is the image's bottom row (texels are stored top row
+// first).
+glm::dvec3 textureColor(const Texture &texture, glm::dvec2 uv);
+
+// Origin for a ray leaving `position` in `dir`: moved along the facing geometric normal, to the
+// side the ray leaves from, by PRISM_OFFSET_RELATIVE * max|P_i| (never a fixed epsilon).
+glm::dvec3 offsetOrigin(glm::dvec3 position, glm::dvec3 facingNormal, glm::dvec3 dir);
+
+} // namespace prism::reference

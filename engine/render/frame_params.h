@@ -1,0 +1,14 @@
+#pragma once
+// The camera model of the scene format, reduced to the four vectors the tracer needs.
+#include <cstdint>
+
+#include "scene/scene.h"
+#include "shared/gpu_types.h"
+
+namespace prism {
+
+// Basis computed in double (then rounded once) so the shader's rays match the reference's.
+gpu::GpuFrameParams makeFrameParams(const Camera &camera, uint32_t width, uint32_t height,
+                                    uint32_t samplesPerPixel, uint32_t maxDepth);
+
+} // namespace prism

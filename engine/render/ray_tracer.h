@@ -1,0 +1,82 @@
+#pragma once
+// The ray-tracing pass: owns the scene's GPU buffers, the tracer pipeline for the scene's
+// feature set and the accumulation image; records sample dispatches and reads results back.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "core/ray_counts.h"
+#include "render/scene_packing.h"
+#include "render/tracer_features.h"
+#include "vk/buffer.h"
+#include "vk/commands.h"
+#include "vk/compute_pipeline.h"
+#include "vk/context.h"
+#include "vk/image.h"
+
+namespace prism {
+
+struct TracerOptions {
+    uint32_t maxDepth = 5;
+    bool writeAov = false;
+    bool shadows = true;
+    bool reflection = true;   // false: off even where materials reflect (feature-cost study)
+    bool transmission = true; // likewise for refraction
+    int64_t loopBudget = -1;  // -1: the device's own limit (lavapipe: 60,000; GPUs: none)
+};
+
+struct FrameResult {
+    double gpuMs = 0.0;          // from GPU timestamps, all sample dispatches of the frame
+    RayCounts rays;
+    uint64_t overBudgetPixels = 0;
+};
+
+struct TracedImage {
+    uint32_t width = 0, height = 0;
+    std::vector<float> rgba;   // mean radiance, alpha 1, row 0 = top
+    std::vector<float> depth;  // with writeAov: distance to the hit of the centre ray, +inf miss
+    std::vector<float> normal; // with writeAov: xyz per pixel, facing the ray, 0 on a miss
+};
+
+class RayTracer {
+public:
+    RayTracer(vk::Context &context, const Scene &scene, const Grid &grid, uint32_t width,
+              uint32_t height, const TracerOptions &options);
+    ~RayTracer();
+
+    // Records dispatches for samples [firstSample, firstSample + count) of `samplesPerPixel`.
+    // Sample 0 overwrites the accumulation, later samples add to it.
+    void recordSamples(VkCommandBuffer commands, const Camera &camera, uint32_t firstSample,
+                       uint32_t count, uint32_t samplesPerPixel);
+
+    // A whole frame: all samples, submitted and waited for, with GPU time and ray counts.
+    // With `progress`, samples go in several submissions and progress gets the fraction done.
+    FrameResult renderFrame(const Camera &camera, uint32_t samplesPerPixel,
+                            const std::function<void(double)> &progress = {});
+
+    // Copies the accumulation (and AOVs) to the host and divides by the sample count.
+    TracedImage readback(uint32_t samplesPerPixel);
+
+    const vk::Image &accumulation() const { return accum_; }
+    const TracerFeatures &features() const { return features_; }
+    uint32_t width() const { return width_; }
+    uint32_t height() const { return height_; }
+
+private:
+    vk::Buffer upload(const void *data, size_t bytes, const char *what);
+    void transitionImages();
+
+    vk::Context &context_;
+    uint32_t width_, height_;
+    TracerFeatures features_;
+    vk::CommandRunner runner_;
+    std::vector<vk::Buffer> sceneBuffers_; // bindings 2..12, in binding order
+    vk::Buffer stats_;
+    vk::Image accum_;
+    vk::Image aov_;
+    VkQueryPool timestamps_ = VK_NULL_HANDLE;
+    std::unique_ptr<vk::ComputePipeline> pipeline_;
+};
+
+} // namespace prism

@@ -1,0 +1,28 @@
+#pragma once
+// Turns the scene and its grid into the flat std430 arrays the tracer reads (shared/gpu_types.h).
+// CPU only, so the packing is unit-tested without a device.
+#include <vector>
+
+#include "accel/grid.h"
+#include "scene/scene.h"
+#include "shared/gpu_types.h"
+
+namespace prism {
+
+struct PackedScene {
+    gpu::GpuSceneHeader header{};
+    std::vector<gpu::GpuSphere> spheres;
+    std::vector<gpu::GpuPlane> planes;
+    std::vector<gpu::GpuTriangle> triangles;
+    std::vector<gpu::GpuTriangleShading> triangleShading; // empty when no triangle needs it
+    std::vector<gpu::GpuMaterial> materials;
+    std::vector<gpu::GpuLight> lights;
+    std::vector<gpu::GpuTexture> textures;
+    std::vector<glm::vec4> texels;
+    std::vector<uint32_t> cellStart;
+    std::vector<uint32_t> cellPrimitives;
+};
+
+PackedScene packScene(const Scene &scene, const Grid &grid);
+
+} // namespace prism

@@ -1,0 +1,206 @@
+#include "scene/mesh_importer.h"
+
+#include "core/error.h"
+#include "scene/diagnostics.h"
+#include "scene/text_file.h"
+#include "scene/tokenizer.h"
+
+#include <cfloat>
+#include <cmath>
+#include <system_error>
+
+namespace prism {
+namespace {
+
+bool fitsFloat(const glm::dvec3 &v) {
+    return std::fabs(v.x) <= FLT_MAX && std::fabs(v.y) <= FLT_MAX && std::fabs(v.z) <= FLT_MAX;
+}
+
+bool isReadableFile(const std::filesystem::path &path) {
+    std::error_code ec;
+    return std::filesystem::is_regular_file(path, ec);
+}
+
+// Placed vertex positions; a vertex pushed out of float range is an error of the mesh line.
+std::vector<glm::vec3> placePositions(const ObjModel &model, const AffineMap &map) {
+    std::vector<glm::vec3> placed(model.positions.size());
+    for (size_t i = 0; i < placed.size(); ++i) {
+        glm::dvec3 p = map.point(model.positions[i]);
+        if (!fitsFloat(p))
+            throw LineError("the mesh transform takes vertex " + std::to_string(i + 1) +
+                            " out of the range of a 32-bit float");
+        placed[i] = glm::vec3(p);
+    }
+    return placed;
+}
+
+// Placed unit normals; a zero normal stays zero and disables vertex normals where it is used.
+std::vector<glm::vec3> placeNormals(const ObjModel &model, const AffineMap &map) {
+    std::vector<glm::vec3> placed(model.normals.size());
+    for (size_t i = 0; i < placed.size(); ++i) {
+        glm::dvec3 n = map.normal(model.normals[i]);
+        double length = glm::length(n);
+        placed[i] = length > 0.0 && std::isfinite(length) ? glm::vec3(n / length) : glm::vec3(0);
+    }
+    return placed;
+}
+
+} // namespace
+
+bool hasZeroArea(const glm::vec3 &p0, const glm::vec3 &p1, const glm::vec3 &p2) {
+    return glm::cross(p1 - p0, p2 - p0) == glm::vec3(0.0f);
+}
+
+MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &request,
+                                      Scene &scene, TextureCache &textures) {
+    std::vector<uint32_t> slotMaterial;
+    if (!request.namedMaterial)
+        slotMaterial = slotMaterials(model, request, scene, textures);
+
+    AffineMap map(request.transform);
+    std::vector<glm::vec3> positions = placePositions(model, map);
+    std::vector<glm::vec3> normals = placeNormals(model, map);
+
+    MeshImportResult result;
+    for (const ObjFace &face : model.faces) {
+        uint32_t material = request.namedMaterial.value_or(request.fallbackMaterial);
+        if (!request.namedMaterial && face.materialSlot != kObjNoIndex)
+            material = slotMaterial[size_t(face.materialSlot)];
+        const ObjCorner *corners = &model.corners[face.firstCorner];
+        // Fan triangulation around the first corner.
+        for (uint32_t k = 1; k + 1 < face.cornerCount; ++k) {
+            const ObjCorner *tri[3] = {&corners[0], &corners[k], &corners[k + 1]};
+            Triangle t;
+            for (int c = 0; c < 3; ++c)
+                t.p[c] = positions[size_t(tri[c]->position)];
+            if (hasZeroArea(t.p[0], t.p[1], t.p[2])) {
+                ++result.degenerateDropped;
+                continue;
+            }
+            t.hasNormals = t.hasUVs = true;
+            for (int c = 0; c < 3; ++c) {
+                if (tri[c]->normal != kObjNoIndex)
+                    t.n[c] = normals[size_t(tri[c]->normal)];
+                t.hasNormals =
+                    t.hasNormals && tri[c]->normal != kObjNoIndex && t.n[c] != glm::vec3(0.0f);
+                if (tri[c]->uv != kObjNoIndex)
+                    t.uv[c] = model.uvs[size_t(tri[c]->uv)];
+                t.hasUVs = t.hasUVs && tri[c]->uv != kObjNoIndex;
+            }
+            if (!t.hasNormals)
+                t.n[0] = t.n[1] = t.n[2] = glm::vec3(0.0f);
+            if (!t.hasUVs)
+                t.uv[0] = t.uv[1] = t.uv[2] = glm::vec2(0.0f);
+            t.material = material;
+            scene.triangles.push_back(t);
+            ++result.triangles;
+        }
+    }
+    return result;
+}
+
+std::vector<uint32_t> MeshImporter::slotMaterials(const ObjModel &model, const MeshRequest &request,
+                                                  Scene &scene, TextureCache &textures) {
+    std::vector<const LoadedLibrary *> libraries = loadLibraries(model, request, scene);
+    std::vector<bool> used(model.useMtl.size(), false);
+    for (const ObjFace &face : model.faces)
+        if (face.materialSlot != kObjNoIndex)
+            used[size_t(face.materialSlot)] = true;
+
+    std::string objDisplay = displayPath(request.objPath);
+    std::vector<uint32_t> materials(model.useMtl.size(), request.fallbackMaterial);
+    for (size_t slot = 0; slot < model.useMtl.size(); ++slot) {
+        const ObjUseMtl &use = model.useMtl[slot];
+        if (use.name.empty())
+            continue;
+        const LoadedLibrary *library = nullptr;
+        const MtlMaterial *mtl = nullptr;
+        for (auto it = libraries.rbegin(); it != libraries.rend() && !mtl; ++it) {
+            mtl = (*it)->library.find(use.name);
+            library = *it;
+        }
+        if (!mtl) {
+            scene.warnings.push_back(warningAt(
+                objDisplay, use.line,
+                "material '" + use.name + "' is not defined in any mtllib file; its faces use '" +
+                    scene.materials[request.fallbackMaterial].name + "'"));
+            continue;
+        }
+        if (used[slot])
+            materials[slot] = sceneMaterial(*library, *mtl, request, scene, textures);
+    }
+    return materials;
+}
+
+std::vector<const MeshImporter::LoadedLibrary *>
+MeshImporter::loadLibraries(const ObjModel &model, const MeshRequest &request, Scene &scene) {
+    std::filesystem::path objDir = request.objPath.parent_path();
+    std::string objDisplay = displayPath(request.objPath);
+    std::vector<const LoadedLibrary *> libraries;
+    std::vector<std::string_view> words;
+    for (const ObjMtlLib &lib : model.mtlLibs) {
+        // One name with spaces, or (as OBJ allows) several names separated by spaces.
+        std::filesystem::path whole = resolveInputPath(objDir, lib.path);
+        splitWords(lib.path, words);
+        if (words.size() > 1 && !isReadableFile(whole)) {
+            for (std::string_view word : words)
+                if (const LoadedLibrary *loaded = loadLibrary(
+                        resolveInputPath(objDir, std::string(word)), lib.line, objDisplay, scene))
+                    libraries.push_back(loaded);
+        } else if (const LoadedLibrary *loaded = loadLibrary(whole, lib.line, objDisplay, scene)) {
+            libraries.push_back(loaded);
+        }
+    }
+    return libraries;
+}
+
+const MeshImporter::LoadedLibrary *MeshImporter::loadLibrary(const std::filesystem::path &path,
+                                                             int objLine,
+                                                             const std::string &objDisplay,
+                                                             Scene &scene) {
+    std::string text;
+    std::error_code ec;
+    std::filesystem::path canonical = std::filesystem::canonical(path, ec);
+    try {
+        if (ec)
+            throw Error("cannot read material library '" + displayPath(path) +
+                        "': " + ec.message());
+        auto found = librariesByCanonicalPath_.find(canonical.string());
+        if (found != librariesByCanonicalPath_.end())
+            return &found->second;
+        text = readTextFile(path, "material library");
+    } catch (const Error &e) {
+        scene.warnings.push_back(warningAt(objDisplay, objLine, e.what()));
+        return nullptr;
+    }
+    LoadedLibrary loaded{path, canonical.string(), displayPath(path), {}};
+    loaded.library = parseMtl(text, loaded.display, scene.warnings);
+    return &librariesByCanonicalPath_.emplace(canonical.string(), std::move(loaded)).first->second;
+}
+
+uint32_t MeshImporter::sceneMaterial(const LoadedLibrary &library, const MtlMaterial &mtl,
+                                     const MeshRequest &request, Scene &scene,
+                                     TextureCache &textures) {
+    std::string key = library.canonical + '\n' + mtl.name;
+    auto found = materialsByKey_.find(key);
+    if (found != materialsByKey_.end())
+        return found->second;
+
+    Material material = materialFromMtl(mtl, request.objName + ":" + mtl.name);
+    if (!mtl.texturePath.empty()) {
+        try {
+            material.texture =
+                textures.load(resolveInputPath(library.path.parent_path(), mtl.texturePath), scene);
+        } catch (const Error &e) {
+            scene.warnings.push_back(warningAt(library.display, mtl.textureLine,
+                                               std::string(e.what()) + "; material '" + mtl.name +
+                                                   "' is used without it"));
+        }
+    }
+    scene.materials.push_back(std::move(material));
+    uint32_t index = uint32_t(scene.materials.size() - 1);
+    materialsByKey_.emplace(std::move(key), index);
+    return index;
+}
+
+} // namespace prism

@@ -1,0 +1,63 @@
+#pragma once
+// Turns a parsed OBJ into scene triangles: placement, fan triangulation, vertex normals and
+// texture coordinates, MTL materials (loaded once per file) and their textures.
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "scene/mesh_transform.h"
+#include "scene/mtl_loader.h"
+#include "scene/obj_loader.h"
+#include "scene/scene.h"
+#include "scene/texture_loader.h"
+
+namespace prism {
+
+struct MeshRequest {
+    std::filesystem::path objPath; // resolved, for finding its MTL files
+    std::string objName;           // as written on the mesh line: "<objName>:<mtl>"
+    MeshTransform transform;
+    std::optional<uint32_t> namedMaterial; // the mesh line's NAME: MTL files are not read
+    uint32_t fallbackMaterial = 0;         // the current material
+};
+
+struct MeshImportResult {
+    size_t triangles = 0;         // added to the scene
+    size_t degenerateDropped = 0; // zero-area triangles (they can never be hit)
+};
+
+class MeshImporter {
+public:
+    // Appends the model's triangles (and the MTL materials and textures they use) to `scene`;
+    // MTL problems become warnings. Throws LineError if the transform makes a vertex
+    // non-finite.
+    MeshImportResult import(const ObjModel &model, const MeshRequest &request, Scene &scene,
+                            TextureCache &textures);
+
+private:
+    struct LoadedLibrary {
+        std::filesystem::path path;
+        std::string canonical;
+        std::string display;
+        MtlLibrary library;
+    };
+
+    std::vector<const LoadedLibrary *> loadLibraries(const ObjModel &model,
+                                                     const MeshRequest &request, Scene &scene);
+    const LoadedLibrary *loadLibrary(const std::filesystem::path &path, int objLine,
+                                     const std::string &objDisplay, Scene &scene);
+    std::vector<uint32_t> slotMaterials(const ObjModel &model, const MeshRequest &request,
+                                        Scene &scene, TextureCache &textures);
+    uint32_t sceneMaterial(const LoadedLibrary &library, const MtlMaterial &mtl,
+                           const MeshRequest &request, Scene &scene, TextureCache &textures);
+
+    std::map<std::string, LoadedLibrary> librariesByCanonicalPath_;
+    std::map<std::string, uint32_t> materialsByKey_; // canonical MTL path + '\n' + name
+};
+
+// True when the triangle has zero area in float arithmetic: (p1 - p0) x (p2 - p0) == 0.
+bool hasZeroArea(const glm::vec3 &p0, const glm::vec3 &p1, const glm::vec3 &p2);
+
+} // namespace prism

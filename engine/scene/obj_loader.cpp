@@ -1,0 +1,133 @@
+#include "scene/obj_loader.h"
+
+#include "core/error.h"
+#include "scene/diagnostics.h"
+#include "scene/number_parser.h"
+#include "scene/tokenizer.h"
+
+#include <algorithm>
+
+namespace prism {
+namespace {
+
+float objNumber(std::string_view word) {
+    ParsedFloat parsed = parseFloat(word);
+    if (!parsed.ok())
+        throw LineError(describeBadNumber(word, parsed.problem));
+    return parsed.value;
+}
+
+// The first `need` numbers after the keyword are required; up to N are read; more are
+// ignored (a vertex's w or colour, a texture coordinate's w).
+template <int N>
+glm::vec<N, float> objVector(const std::vector<std::string_view> &words, int need,
+                             const char *what) {
+    int given = int(words.size()) - 1;
+    if (given < need)
+        throw LineError(std::string(what) + " needs " + std::to_string(need) +
+                        (need == 1 ? " number" : " numbers") + ", got " + std::to_string(given));
+    glm::vec<N, float> result(0.0f);
+    for (int i = 0; i < N && i < given; ++i)
+        result[i] = objNumber(words[i + 1]);
+    return result;
+}
+
+// OBJ index (1-based, or negative relative to the count so far) to a 0-based index. `what`
+// names the kind in messages: "" (vertex), "texture coordinate " or "normal "; `plural` is the
+// kind's plural.
+int32_t resolveIndex(std::string_view text, size_t count, const char *what, const char *plural) {
+    ParsedInteger parsed = parseInteger(text);
+    if (!parsed.ok())
+        throw LineError("bad face " + std::string(what) + "index '" + std::string(text) + "'");
+    int64_t index = parsed.value > 0 ? parsed.value - 1 : int64_t(count) + parsed.value;
+    if (parsed.value == 0 || index < 0 || index >= int64_t(count))
+        throw LineError("face " + std::string(what) + "index " + std::to_string(parsed.value) +
+                        " is out of range (" + std::to_string(count) + " " + plural +
+                        " defined so far)");
+    return int32_t(index);
+}
+
+ObjCorner parseCorner(std::string_view word, const ObjModel &model) {
+    std::string_view parts[3];
+    int partCount = 0;
+    for (size_t start = 0;;) {
+        size_t slash = word.find('/', start);
+        if (partCount == 3)
+            throw LineError("bad face corner '" + std::string(word) + "'");
+        parts[partCount++] = word.substr(start, slash - start); // npos - start: to the end
+        if (slash == std::string_view::npos)
+            break;
+        start = slash + 1;
+    }
+    // v, v/vt, v//vn, v/vt/vn: the position is required, an empty vt means none.
+    if (parts[0].empty() || (partCount == 2 && parts[1].empty()) ||
+        (partCount == 3 && parts[2].empty()))
+        throw LineError("bad face corner '" + std::string(word) + "'");
+    ObjCorner corner;
+    corner.position = resolveIndex(parts[0], model.positions.size(), "", "vertices");
+    if (partCount >= 2 && !parts[1].empty())
+        corner.uv =
+            resolveIndex(parts[1], model.uvs.size(), "texture coordinate ", "texture coordinates");
+    if (partCount == 3)
+        corner.normal = resolveIndex(parts[2], model.normals.size(), "normal ", "normals");
+    return corner;
+}
+
+void parseFace(const std::vector<std::string_view> &words, int line, ObjModel &model) {
+    size_t cornerCount = words.size() - 1;
+    if (cornerCount < 3)
+        throw LineError("a face needs at least 3 vertices, got " + std::to_string(cornerCount));
+    ObjFace face;
+    face.firstCorner = uint32_t(model.corners.size());
+    face.cornerCount = uint32_t(cornerCount);
+    face.materialSlot = model.useMtl.empty() ? kObjNoIndex : int32_t(model.useMtl.size() - 1);
+    face.line = line;
+    for (size_t i = 1; i < words.size(); ++i)
+        model.corners.push_back(parseCorner(words[i], model));
+    model.faces.push_back(face);
+}
+
+void parseStatement(std::string_view text, const std::vector<std::string_view> &words, int line,
+                    ObjModel &model) {
+    std::string_view keyword = words[0];
+    if (keyword == "v") {
+        model.positions.push_back(objVector<3>(words, 3, "a vertex"));
+    } else if (keyword == "vt") {
+        model.uvs.push_back(objVector<2>(words, 1, "a texture coordinate"));
+    } else if (keyword == "vn") {
+        model.normals.push_back(objVector<3>(words, 3, "a normal"));
+    } else if (keyword == "f") {
+        parseFace(words, line, model);
+    } else if (keyword == "usemtl") {
+        model.useMtl.push_back(ObjUseMtl{std::string(restAfterFirstWord(text)), line});
+    } else if (keyword == "mtllib") {
+        std::string path(restAfterFirstWord(text));
+        std::replace(path.begin(), path.end(), '\\', '/');
+        if (path.empty())
+            throw LineError("mtllib needs a file name");
+        model.mtlLibs.push_back(ObjMtlLib{std::move(path), line});
+    }
+    // Everything else (o, g, s, l, p, vp, cstype, ...) is of no use to a ray tracer.
+}
+
+} // namespace
+
+ObjModel parseObj(std::string_view text, const std::string &fileName) {
+    ObjModel model;
+    LineCursor lines(text);
+    std::string_view line;
+    std::vector<std::string_view> words;
+    while (lines.next(line)) {
+        splitWords(line, words);
+        if (words.empty())
+            continue;
+        try {
+            parseStatement(line, words, lines.lineNumber(), model);
+        } catch (const LineError &e) {
+            throw FileError(fileName, lines.lineNumber(), e.what());
+        }
+    }
+    return model;
+}
+
+} // namespace prism

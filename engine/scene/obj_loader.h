@@ -1,0 +1,56 @@
+#pragma once
+// Our own Wavefront OBJ reader: only what a ray tracer uses, every error at its OBJ line
+// (tinyobjloader reports no line numbers and accepts NaN).
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace prism {
+
+constexpr int32_t kObjNoIndex = -1;
+
+// One polygon corner, as 0-based indices into ObjModel's arrays.
+struct ObjCorner {
+    int32_t position = kObjNoIndex;
+    int32_t uv = kObjNoIndex;
+    int32_t normal = kObjNoIndex;
+};
+
+struct ObjFace {
+    uint32_t firstCorner = 0;
+    uint32_t cornerCount = 0;
+    int32_t materialSlot = kObjNoIndex; // index into ObjModel::useMtl; none before any usemtl
+    int line = 0;
+};
+
+struct ObjUseMtl {
+    std::string name; // empty for a bare `usemtl`: back to the fallback material
+    int line = 0;
+};
+
+struct ObjMtlLib {
+    std::string path; // rest of the line, backslashes turned into '/'
+    int line = 0;
+};
+
+struct ObjModel {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec2> uvs;
+    std::vector<glm::vec3> normals;
+    std::vector<ObjCorner> corners;
+    std::vector<ObjFace> faces;
+    std::vector<ObjUseMtl> useMtl;
+    std::vector<ObjMtlLib> mtlLibs;
+};
+
+// Parses OBJ text. Reads v (extra w or colour values ignored), vt (u [v [w]]), vn, f (v, v/vt,
+// v//vn, v/vt/vn; negative = relative to the last one defined), usemtl and mtllib; ignores every
+// other statement. An index must refer to an element defined above its face. Throws
+// prism::FileError(fileName, line, ...) for a bad number, a bad or out-of-range index, or a face
+// with fewer than 3 corners.
+ObjModel parseObj(std::string_view text, const std::string &fileName);
+
+} // namespace prism

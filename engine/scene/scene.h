@@ -1,0 +1,87 @@
+#pragma once
+// The scene model every part of Prism shares: what a .scene file (and the OBJ files it names)
+// describes, after parsing, defaults and mesh transforms. No Vulkan here.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace prism {
+
+struct Camera {
+    glm::vec3 eye{0.0f, 0.0f, 5.0f};
+    glm::vec3 look{0.0f, 0.0f, 0.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float fovDegrees = 60.0f;  // vertical field of view (perspective only)
+    float orthoHeight = 0.0f;  // > 0: parallel projection with an image plane this tall
+    bool isOrtho() const { return orthoHeight > 0.0f; }
+};
+
+struct Light {
+    glm::vec3 position{0.0f};
+    glm::vec3 color{1.0f};
+    float radius = 0.0f; // > 0: spherical area light (soft shadows)
+};
+
+// Linear-radiance RGBA texels, row 0 = the image's top row (as stored on disk).
+struct Texture {
+    std::string path;
+    int width = 0;
+    int height = 0;
+    std::vector<glm::vec4> texels; // width * height, already decoded from sRGB where 8-bit
+};
+
+constexpr int32_t kNoTexture = -1;
+
+struct Material {
+    std::string name;
+    glm::vec3 color{0.8f};
+    float ambient = 0.1f;
+    float diffuse = 0.9f;
+    float specular = 0.0f;
+    float shininess = 32.0f;
+    float reflect = 0.0f;
+    float transmit = 0.0f;
+    float ior = 1.5f;
+    int32_t texture = kNoTexture; // index into Scene::textures
+};
+
+struct Sphere {
+    glm::vec3 center{0.0f};
+    float radius = 1.0f;
+    uint32_t material = 0;
+};
+
+struct Plane {
+    glm::vec3 point{0.0f};
+    glm::vec3 normal{0.0f, 1.0f, 0.0f}; // unit length (normalised by the parser)
+    uint32_t material = 0;
+};
+
+struct Triangle {
+    glm::vec3 p[3];           // counter-clockwise front face; Ng = (p1 - p0) x (p2 - p0)
+    glm::vec3 n[3]{};         // vertex normals, valid when hasNormals
+    glm::vec2 uv[3]{};        // texture coordinates, valid when hasUVs
+    bool hasNormals = false;
+    bool hasUVs = false;
+    uint32_t material = 0;
+};
+
+struct Scene {
+    Camera camera;
+    glm::vec3 background{0.0f};
+    glm::vec3 ambient{1.0f};
+    std::vector<Light> lights;
+    std::vector<Material> materials; // materials[0] is the built-in "default"
+    std::vector<Texture> textures;
+    std::vector<Sphere> spheres;
+    std::vector<Plane> planes;
+    std::vector<Triangle> triangles;
+    std::vector<std::string> warnings; // "FILE:LINE: warning: ..." lines, in order
+
+    // Primitives that live in the grid: spheres first, then triangles (one index space).
+    size_t finitePrimitiveCount() const { return spheres.size() + triangles.size(); }
+};
+
+} // namespace prism

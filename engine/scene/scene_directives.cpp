@@ -1,0 +1,339 @@
+// One handler per .scene directive (format v1, docs/scene-format.md).
+#include "scene/scene_parser.h"
+
+#include "core/error.h"
+#include "scene/diagnostics.h"
+#include "scene/directive_args.h"
+#include "scene/mesh_importer.h"
+#include "scene/number_parser.h"
+#include "scene/obj_loader.h"
+#include "scene/text_file.h"
+
+#include <cmath>
+#include <map>
+
+namespace prism {
+namespace {
+
+using Values = std::vector<const Token *>;
+
+float number(const Token *token) {
+    ParsedFloat parsed = parseFloat(token->text);
+    if (!parsed.ok())
+        throw LineError(describeBadNumber(token->text, parsed.problem));
+    return parsed.value;
+}
+
+glm::vec3 vec3At(const Values &values, size_t first = 0) {
+    return {number(values[first]), number(values[first + 1]), number(values[first + 2])};
+}
+
+std::string formatted(glm::vec3 v) {
+    return formatNumber(v.x) + " " + formatNumber(v.y) + " " + formatNumber(v.z);
+}
+
+float nonNegative(std::string_view what, float value) {
+    if (value < 0.0f)
+        throw LineError("'" + std::string(what) + "' must not be negative, got " +
+                        formatNumber(value));
+    return value;
+}
+
+glm::vec3 nonNegativeColour(std::string_view what, glm::vec3 colour) {
+    if (colour.x < 0.0f || colour.y < 0.0f || colour.z < 0.0f)
+        throw LineError("'" + std::string(what) + "' must not be negative, got " +
+                        formatted(colour));
+    return colour;
+}
+
+uint32_t materialNamed(const SceneBuilder &builder, const Token *name) {
+    auto found = builder.materialByName.find(name->text);
+    if (found == builder.materialByName.end())
+        throw LineError("unknown material '" + name->text + "'");
+    return found->second;
+}
+
+// The optional trailing NAME of a primitive, or the current material.
+uint32_t primitiveMaterial(const SceneBuilder &builder, const DirectiveArgs &args,
+                           size_t nameIndex) {
+    return args.positional.size() > nameIndex ? materialNamed(builder, args.positional[nameIndex])
+                                              : builder.currentMaterial;
+}
+
+void addTriangle(SceneBuilder &builder, glm::vec3 a, glm::vec3 b, glm::vec3 c, uint32_t material,
+                 int &dropped) {
+    if (hasZeroArea(a, b, c)) {
+        ++dropped;
+        return;
+    }
+    Triangle t;
+    t.p[0] = a;
+    t.p[1] = b;
+    t.p[2] = c;
+    t.material = material;
+    builder.scene.triangles.push_back(t);
+}
+
+void warnDropped(SceneBuilder &builder, int dropped, const std::string &where) {
+    if (dropped > 0)
+        builder.warn(std::to_string(dropped) + " degenerate (zero-area) triangle" +
+                     (dropped == 1 ? "" : "s") + where + " dropped");
+}
+
+void camera(SceneBuilder &builder, const DirectiveArgs &args) {
+    if (builder.cameraLine != 0)
+        throw LineError("only one camera is allowed (the first is at line " +
+                        std::to_string(builder.cameraLine) + ")");
+    const KeyedValues *eye = args.find("eye");
+    const KeyedValues *look = args.find("look");
+    if (!eye || !look)
+        throw LineError(std::string("camera needs '") + (eye ? "look" : "eye") + " X Y Z'");
+    Camera camera;
+    camera.eye = vec3At(eye->values);
+    camera.look = vec3At(look->values);
+    if (const KeyedValues *up = args.find("up"))
+        camera.up = vec3At(up->values);
+    if (const KeyedValues *fov = args.find("fov")) {
+        camera.fovDegrees = number(fov->values[0]);
+        if (!(camera.fovDegrees > 0.0f && camera.fovDegrees < 180.0f))
+            throw LineError("camera fov must be between 0 and 180 degrees (exclusive), got " +
+                            formatNumber(camera.fovDegrees));
+    }
+    if (const KeyedValues *ortho = args.find("ortho")) {
+        camera.orthoHeight = number(ortho->values[0]);
+        if (!(camera.orthoHeight > 0.0f))
+            throw LineError("camera ortho height must be > 0, got " +
+                            formatNumber(camera.orthoHeight));
+    }
+    if (camera.eye == camera.look)
+        throw LineError("camera eye and look must differ");
+    glm::dvec3 forward = glm::normalize(glm::dvec3(camera.look) - glm::dvec3(camera.eye));
+    glm::dvec3 up(camera.up);
+    // sin(angle between up and the view direction) below 1e-6 leaves no usable right vector.
+    if (glm::length(glm::cross(forward, up)) <= 1e-6 * glm::length(up))
+        throw LineError("camera up " + formatted(camera.up) +
+                        " must not be zero or parallel to the view direction");
+    builder.scene.camera = camera;
+    builder.cameraLine = builder.line;
+}
+
+void background(SceneBuilder &builder, const DirectiveArgs &args) {
+    builder.scene.background = nonNegativeColour("background", vec3At(args.positional));
+}
+
+void ambient(SceneBuilder &builder, const DirectiveArgs &args) {
+    builder.scene.ambient = nonNegativeColour("ambient", vec3At(args.positional));
+}
+
+void light(SceneBuilder &builder, const DirectiveArgs &args) {
+    Light light;
+    light.position = vec3At(args.positional);
+    if (const KeyedValues *color = args.find("color"))
+        light.color = nonNegativeColour("color", vec3At(color->values));
+    if (const KeyedValues *radius = args.find("radius"))
+        light.radius = nonNegative("radius", number(radius->values[0]));
+    builder.scene.lights.push_back(light);
+}
+
+void material(SceneBuilder &builder, const DirectiveArgs &args) {
+    const std::string &name = args.positional[0]->text;
+    if (auto earlier = builder.materialLine.find(name); earlier != builder.materialLine.end())
+        throw LineError("material '" + name + "' is already defined" +
+                        (earlier->second == 0 ? std::string(" (built in)")
+                                              : " at line " + std::to_string(earlier->second)));
+    Material m;
+    m.name = name;
+    for (const KeyedValues &kv : args.keyed) {
+        if (kv.key == "color")
+            m.color = nonNegativeColour(kv.key, vec3At(kv.values));
+        else if (kv.key == "ambient")
+            m.ambient = nonNegative(kv.key, number(kv.values[0]));
+        else if (kv.key == "diffuse")
+            m.diffuse = nonNegative(kv.key, number(kv.values[0]));
+        else if (kv.key == "specular")
+            m.specular = nonNegative(kv.key, number(kv.values[0]));
+        else if (kv.key == "shininess")
+            m.shininess = nonNegative(kv.key, number(kv.values[0]));
+        else if (kv.key == "reflect")
+            m.reflect = nonNegative(kv.key, number(kv.values[0]));
+        else if (kv.key == "transmit")
+            m.transmit = nonNegative(kv.key, number(kv.values[0]));
+        else if (kv.key == "ior") {
+            m.ior = number(kv.values[0]);
+            if (!(m.ior > 0.0f))
+                throw LineError("'ior' must be > 0, got " + formatNumber(m.ior));
+        } else if (kv.key == "texture")
+            m.texture = builder.textures.load(resolveInputPath(builder.baseDir, kv.values[0]->text),
+                                              builder.scene);
+    }
+    builder.scene.materials.push_back(std::move(m));
+    uint32_t index = uint32_t(builder.scene.materials.size() - 1);
+    builder.materialByName[name] = index;
+    builder.materialLine[name] = builder.line;
+}
+
+void use(SceneBuilder &builder, const DirectiveArgs &args) {
+    builder.currentMaterial = materialNamed(builder, args.positional[0]);
+}
+
+void sphere(SceneBuilder &builder, const DirectiveArgs &args) {
+    Sphere s;
+    s.center = vec3At(args.positional);
+    s.radius = number(args.positional[3]);
+    if (!(s.radius > 0.0f))
+        throw LineError("sphere radius must be > 0, got " + formatNumber(s.radius));
+    s.material = primitiveMaterial(builder, args, 4);
+    builder.scene.spheres.push_back(s);
+}
+
+void plane(SceneBuilder &builder, const DirectiveArgs &args) {
+    Plane p;
+    p.point = vec3At(args.positional);
+    glm::dvec3 normal(vec3At(args.positional, 3));
+    double length = glm::length(normal);
+    if (length == 0.0)
+        throw LineError("plane normal must not be zero");
+    p.normal = glm::vec3(normal / length);
+    p.material = primitiveMaterial(builder, args, 6);
+    builder.scene.planes.push_back(p);
+}
+
+void triangle(SceneBuilder &builder, const DirectiveArgs &args) {
+    uint32_t material = primitiveMaterial(builder, args, 9);
+    int dropped = 0;
+    addTriangle(builder, vec3At(args.positional, 0), vec3At(args.positional, 3),
+                vec3At(args.positional, 6), material, dropped);
+    warnDropped(builder, dropped, "");
+}
+
+void vertex(SceneBuilder &builder, const DirectiveArgs &args) {
+    builder.faceVertices.push_back(vec3At(args.positional));
+}
+
+// 1-based, or negative = relative to the last `v` so far (as in OBJ).
+glm::vec3 faceVertex(const SceneBuilder &builder, const Token *token) {
+    ParsedInteger parsed = parseInteger(token->text);
+    if (!parsed.ok())
+        throw LineError("bad vertex index '" + token->text + "'");
+    int64_t count = int64_t(builder.faceVertices.size());
+    int64_t index = parsed.value > 0 ? parsed.value - 1 : count + parsed.value;
+    if (parsed.value == 0 || index < 0 || index >= count)
+        throw LineError("face index " + std::to_string(parsed.value) + " is out of range (" +
+                        std::to_string(count) + " vertices defined so far)");
+    return builder.faceVertices[size_t(index)];
+}
+
+void face(SceneBuilder &builder, const DirectiveArgs &args) {
+    if (args.positional.size() < 3)
+        throw LineError("a face needs at least 3 vertices, got " +
+                        std::to_string(args.positional.size()));
+    std::vector<glm::vec3> corners;
+    for (const Token *token : args.positional)
+        corners.push_back(faceVertex(builder, token));
+    int dropped = 0;
+    for (size_t k = 1; k + 1 < corners.size(); ++k) // fan around the first corner
+        addTriangle(builder, corners[0], corners[k], corners[k + 1], builder.currentMaterial,
+                    dropped);
+    warnDropped(builder, dropped, "");
+}
+
+int rotationAxis(const Token *token) {
+    if (token->text == "x" || token->text == "y" || token->text == "z")
+        return token->text[0] - 'x';
+    throw LineError("rotate axis must be x, y or z, got '" + token->text + "'");
+}
+
+void mesh(SceneBuilder &builder, const DirectiveArgs &args) {
+    MeshRequest request;
+    request.objPath = resolveInputPath(builder.baseDir, args.positional[0]->text);
+    request.objName = displayPath(resolveInputPath("", args.positional[0]->text));
+    if (args.positional.size() > 1)
+        request.namedMaterial = materialNamed(builder, args.positional[1]);
+    request.fallbackMaterial = builder.currentMaterial;
+    for (const KeyedValues &kv : args.keyed) {
+        if (kv.key == "scale") {
+            request.transform.scale = number(kv.values[0]);
+            if (!(request.transform.scale > 0.0))
+                throw LineError("'scale' must be > 0, got " +
+                                formatNumber(request.transform.scale));
+        } else if (kv.key == "rotate") {
+            request.transform.rotations.push_back(
+                MeshRotation{rotationAxis(kv.values[0]), number(kv.values[1])});
+        } else if (kv.key == "translate") {
+            request.transform.translation = glm::dvec3(vec3At(kv.values));
+        }
+    }
+    std::string text = readTextFile(request.objPath, "OBJ file");
+    ObjModel model = parseObj(text, displayPath(request.objPath));
+    MeshImportResult result =
+        builder.meshes.import(model, request, builder.scene, builder.textures);
+    warnDropped(builder, int(result.degenerateDropped),
+                " in '" + displayPath(request.objPath) + "'");
+}
+
+struct Directive {
+    DirectiveSpec spec;
+    void (*apply)(SceneBuilder &, const DirectiveArgs &);
+};
+
+const std::map<std::string_view, Directive> &directives() {
+    constexpr int kAny = DirectiveSpec::kUnlimited;
+    static const std::map<std::string_view, Directive> table = {
+        {"camera",
+         {{"camera",
+           "camera eye X Y Z look X Y Z [up X Y Z] [fov DEG] [ortho HEIGHT]",
+           0,
+           0,
+           {{"eye", 3}, {"look", 3}, {"up", 3}, {"fov", 1}, {"ortho", 1}}},
+          camera}},
+        {"background", {{"background", "background R G B", 3, 3, {}}, background}},
+        {"ambient", {{"ambient", "ambient R G B", 3, 3, {}}, ambient}},
+        {"light",
+         {{"light", "light X Y Z [color R G B] [radius R]", 3, 3, {{"color", 3}, {"radius", 1}}},
+          light}},
+        {"material",
+         {{"material",
+           "material NAME [color R G B] [ambient K] [diffuse K] [specular K] [shininess N] "
+           "[reflect K] [transmit K] [ior N] [texture PATH]",
+           1,
+           1,
+           {{"color", 3},
+            {"ambient", 1},
+            {"diffuse", 1},
+            {"specular", 1},
+            {"shininess", 1},
+            {"reflect", 1},
+            {"transmit", 1},
+            {"ior", 1},
+            {"texture", 1}}},
+          material}},
+        {"use", {{"use", "use NAME", 1, 1, {}}, use}},
+        {"sphere", {{"sphere", "sphere X Y Z RADIUS [NAME]", 4, 5, {}}, sphere}},
+        {"plane", {{"plane", "plane X Y Z NX NY NZ [NAME]", 6, 7, {}}, plane}},
+        {"triangle",
+         {{"triangle", "triangle X1 Y1 Z1 X2 Y2 Z2 X3 Y3 Z3 [NAME]", 9, 10, {}}, triangle}},
+        {"v", {{"v", "v X Y Z", 3, 3, {}}, vertex}},
+        {"f", {{"f", "f A B C [D ...]", 0, kAny, {}}, face}},
+        {"mesh",
+         {{"mesh",
+           "mesh PATH [NAME] [scale S] [rotate AXIS DEG]... [translate X Y Z]",
+           1,
+           2,
+           {{"scale", 1}, {"rotate", 2, true}, {"translate", 3}}},
+          mesh}},
+    };
+    return table;
+}
+
+} // namespace
+
+void applyDirective(SceneBuilder &builder, std::span<const Token> tokens) {
+    const Token &keyword = tokens[0];
+    auto found = keyword.quoted ? directives().end() : directives().find(keyword.text);
+    if (found == directives().end())
+        throw LineError("unknown directive '" + keyword.text + "'");
+    const Directive &directive = found->second;
+    directive.apply(builder, splitDirectiveArgs(directive.spec, tokens.subspan(1)));
+}
+
+} // namespace prism

@@ -1,0 +1,46 @@
+#pragma once
+// A compute pipeline with its descriptor set layout, pipeline layout and a single descriptor
+// set (one frame in flight for compute is enough: the host waits for each frame).
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace prism::vk {
+
+class Context;
+
+struct ComputePipelineDesc {
+    std::span<const uint32_t> spirv;
+    std::vector<VkDescriptorType> bindings;   // binding i has type bindings[i], count 1
+    std::vector<uint32_t> specialization;     // constant_id i = specialization[i]
+    uint32_t pushConstantBytes = 0;
+};
+
+class ComputePipeline {
+public:
+    ComputePipeline(const Context &context, const ComputePipelineDesc &desc);
+    ~ComputePipeline();
+    ComputePipeline(const ComputePipeline &) = delete;
+    ComputePipeline &operator=(const ComputePipeline &) = delete;
+
+    void bindBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize size = VK_WHOLE_SIZE);
+    void bindStorageImage(uint32_t binding, VkImageView view);
+    // Binds pipeline and descriptor set on `commands`.
+    void bind(VkCommandBuffer commands) const;
+    VkPipelineLayout layout() const { return layout_; }
+
+private:
+    void destroy();
+    VkDevice device_;
+    std::vector<VkDescriptorType> types_;
+    VkShaderModule module_ = VK_NULL_HANDLE;
+    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    VkDescriptorPool pool_ = VK_NULL_HANDLE;
+    VkDescriptorSet set_ = VK_NULL_HANDLE;
+};
+
+} // namespace prism::vk

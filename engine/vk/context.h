@@ -1,0 +1,62 @@
+#pragma once
+// The Vulkan instance, the chosen physical device, its logical device and compute queue.
+// One owner for each; destroyed in reverse creation order.
+#include <atomic>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace prism::vk {
+
+struct ContextOptions {
+    bool validation = false;                  // Khronos validation layer + debug messenger
+    std::vector<const char *> instanceExtensions; // e.g. what GLFW needs for a surface
+    std::vector<const char *> deviceExtensions;   // e.g. VK_KHR_swapchain
+    std::string deviceNameFilter;             // choose the first device whose name contains this
+};
+
+class Context {
+public:
+    explicit Context(const ContextOptions &options);
+    ~Context();
+    Context(const Context &) = delete;
+    Context &operator=(const Context &) = delete;
+
+    VkInstance instance() const { return instance_; }
+    VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
+    VkDevice device() const { return device_; }
+    VkQueue queue() const { return queue_; }
+    uint32_t queueFamily() const { return queueFamily_; }
+    const VkPhysicalDeviceProperties &properties() const { return properties_; }
+    std::string deviceName() const { return properties_.deviceName; }
+    // lavapipe silently cuts shader loops short after 65,535 iterations (see docs/design.md).
+    bool isLavapipe() const { return driverId_ == VK_DRIVER_ID_MESA_LLVMPIPE; }
+    uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const;
+
+    // Validation messages seen so far (warnings and errors); tests require zero.
+    uint32_t validationMessageCount() const { return validationMessages_.load(); }
+    bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
+
+private:
+    void destroy();
+    void createInstance(const ContextOptions &options);
+    void pickPhysicalDevice(const ContextOptions &options);
+    void createDevice(const ContextOptions &options);
+    static VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(
+        VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT types,
+        const VkDebugUtilsMessengerCallbackDataEXT *data, void *user);
+
+    VkInstance instance_ = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkPhysicalDevice physicalDevice_ = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties properties_{};
+    VkPhysicalDeviceMemoryProperties memoryProperties_{};
+    VkDriverId driverId_{};
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    uint32_t queueFamily_ = 0;
+    std::atomic<uint32_t> validationMessages_{0};
+};
+
+} // namespace prism::vk

@@ -1,0 +1,76 @@
+#include "vk/image.h"
+
+#include <utility>
+
+#include "vk/context.h"
+#include "vk/vk_check.h"
+
+namespace prism::vk {
+
+Image::Image(const Context &context, uint32_t width, uint32_t height, VkFormat format,
+             VkImageUsageFlags usage)
+    : device_(context.device()), format_(format), width_(width), height_(height) {
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = VK_IMAGE_TYPE_2D;
+    info.format = format;
+    info.extent = {width, height, 1};
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = usage;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VK_CHECK(vkCreateImage(device_, &info, nullptr, &image_));
+    try {
+        VkMemoryRequirements requirements;
+        vkGetImageMemoryRequirements(device_, image_, &requirements);
+        VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        alloc.allocationSize = requirements.size;
+        alloc.memoryTypeIndex = context.findMemoryType(requirements.memoryTypeBits,
+                                                       VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+        VK_CHECK(vkBindImageMemory(device_, image_, memory_, 0));
+
+        VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        viewInfo.image = image_;
+        viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        viewInfo.format = format;
+        viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        VK_CHECK(vkCreateImageView(device_, &viewInfo, nullptr, &view_));
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
+Image::~Image() { release(); }
+
+Image::Image(Image &&other) noexcept { *this = std::move(other); }
+
+Image &Image::operator=(Image &&other) noexcept {
+    if (this != &other) {
+        release();
+        device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+        image_ = std::exchange(other.image_, VK_NULL_HANDLE);
+        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        view_ = std::exchange(other.view_, VK_NULL_HANDLE);
+        format_ = other.format_;
+        width_ = other.width_;
+        height_ = other.height_;
+    }
+    return *this;
+}
+
+void Image::release() {
+    if (view_)
+        vkDestroyImageView(device_, view_, nullptr);
+    if (image_)
+        vkDestroyImage(device_, image_, nullptr);
+    if (memory_)
+        vkFreeMemory(device_, memory_, nullptr);
+    view_ = VK_NULL_HANDLE;
+    image_ = VK_NULL_HANDLE;
+    memory_ = VK_NULL_HANDLE;
+}
+
+} // namespace prism::vk

@@ -1,0 +1,36 @@
+#pragma once
+// A 2D VkImage with its memory and one view. Move-only owner.
+#include <vulkan/vulkan.h>
+
+namespace prism::vk {
+
+class Context;
+
+class Image {
+public:
+    Image() = default;
+    Image(const Context &context, uint32_t width, uint32_t height, VkFormat format,
+          VkImageUsageFlags usage);
+    ~Image();
+    Image(Image &&other) noexcept;
+    Image &operator=(Image &&other) noexcept;
+    Image(const Image &) = delete;
+    Image &operator=(const Image &) = delete;
+
+    VkImage handle() const { return image_; }
+    VkImageView view() const { return view_; }
+    VkFormat format() const { return format_; }
+    uint32_t width() const { return width_; }
+    uint32_t height() const { return height_; }
+
+private:
+    void release();
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkImage image_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkImageView view_ = VK_NULL_HANDLE;
+    VkFormat format_ = VK_FORMAT_UNDEFINED;
+    uint32_t width_ = 0, height_ = 0;
+};
+
+} // namespace prism::vk

@@ -1,0 +1,44 @@
+// Deterministic sample numbers shared by the GLSL tracer and the C++ reference, so both trace
+// exactly the same anti-aliasing offsets and area-light points and their images can be
+// compared pixel for pixel. Pure 32-bit integer maths: bit-identical on CPU and GPU.
+#ifndef PRISM_SAMPLING_H
+#define PRISM_SAMPLING_H
+#include "glsl_compat.h"
+
+PRISM_NAMESPACE_BEGIN
+
+// PCG-RXS-M-XS hash (Jarzynski & Olano 2020, "Hash Functions for GPU Rendering").
+PRISM_INLINE uint pcgHash(uint v) {
+    uint state = v * 747796405u + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+// Sample dimensions: 0 and 1 jitter the pixel; area-light points use
+// kDimLightBase + 2 * (depth0 * lightCount + light) and the next one (depth0 = ray depth - 1).
+#define PRISM_DIM_PIXEL_X 0u
+#define PRISM_DIM_PIXEL_Y 1u
+#define PRISM_DIM_LIGHT_BASE 2u
+
+// A uniform number in [0, 1) for (pixel, sample, dimension); 24 bits, exact in float.
+PRISM_INLINE uint sampleBits(uint pixelIndex, uint sampleIndex, uint dimension) {
+    return pcgHash(pixelIndex ^ pcgHash(sampleIndex ^ pcgHash(dimension)));
+}
+PRISM_INLINE float sample01(uint pixelIndex, uint sampleIndex, uint dimension) {
+    return float(sampleBits(pixelIndex, sampleIndex, dimension) >> 8u) * (1.0f / 16777216.0f);
+}
+
+// Strata for N samples per pixel: columns = floor(sqrt(N)), rows = ceil(N / columns).
+PRISM_INLINE uint strataColumns(uint samplesPerPixel) {
+    uint c = uint(sqrt(float(samplesPerPixel)));
+    while ((c + 1u) * (c + 1u) <= samplesPerPixel) c += 1u; // guard against sqrt rounding
+    while (c * c > samplesPerPixel) c -= 1u;
+    return c < 1u ? 1u : c;
+}
+PRISM_INLINE uint strataRows(uint samplesPerPixel) {
+    uint c = strataColumns(samplesPerPixel);
+    return (samplesPerPixel + c - 1u) / c;
+}
+
+PRISM_NAMESPACE_END
+#endif

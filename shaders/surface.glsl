@@ -1,0 +1,88 @@
+// What a hit looks like to the shader: position, normals, texture coordinates, material.
+
+const float kPi = 3.14159265358979323846;
+
+struct Surface {
+    vec3 position;
+    vec3 geometricNormal; // the primitive's own normal (sphere outward, plane given, triangle ABC)
+    vec3 shadingNormal;   // interpolated vertex normal where present, else geometricNormal
+    vec2 uv;
+    uint material;
+};
+
+// Plane texture axes: a1 = normalize(n x e) with e the world axis least aligned with n
+// (x before y before z on ties), a2 = n x a1.
+vec2 planeUV(vec3 p, vec3 n) {
+    vec3 a = abs(n);
+    vec3 axis = (a.x <= a.y && a.x <= a.z) ? vec3(1, 0, 0)
+                                           : (a.y <= a.z ? vec3(0, 1, 0) : vec3(0, 0, 1));
+    vec3 a1 = normalize(cross(n, axis));
+    vec3 a2 = cross(n, a1);
+    return vec2(dot(p, a1), dot(p, a2));
+}
+
+// Hit points are rebuilt from the primitive (not origin + t * dir) so their error is relative
+// to |P|, which is what the relative ray offset assumes.
+Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
+    Surface s;
+    if (HAS_SPHERES && hit.kind == kHitSphere) {
+        vec4 cr = spheres[hit.index].centerRadius;
+        vec3 n = normalize(origin + hit.t * dir - cr.xyz);
+        s.position = cr.xyz + cr.w * n;
+        s.geometricNormal = n;
+        s.shadingNormal = n;
+        s.uv = vec2(0.5 + atan(n.z, n.x) / (2.0 * kPi), 0.5 + asin(clamp(n.y, -1.0, 1.0)) / kPi);
+        s.material = spheres[hit.index].material.x;
+    } else if (HAS_PLANES && hit.kind == kHitPlane) {
+        vec4 no = planes[hit.index].normalOffset;
+        vec3 p = origin + hit.t * dir;
+        s.position = p - (dot(no.xyz, p) - no.w) * no.xyz;
+        s.geometricNormal = no.xyz;
+        s.shadingNormal = no.xyz;
+        s.uv = HAS_TEXTURES ? planeUV(s.position, no.xyz) : vec2(0.0);
+        s.material = uint(planes[hit.index].point.w);
+    } else {
+        GpuTriangle tri = triangles[hit.index];
+        float b1 = hit.b12.x, b2 = hit.b12.y, b0 = 1.0 - b1 - b2;
+        s.position = b0 * tri.v0.xyz + b1 * tri.v1.xyz + b2 * tri.v2.xyz;
+        s.geometricNormal = normalize(cross(tri.v1.xyz - tri.v0.xyz, tri.v2.xyz - tri.v0.xyz));
+        s.shadingNormal = s.geometricNormal;
+        s.uv = vec2(b1, b2);
+        if (HAS_VERTEX_NORMALS || HAS_TEXTURES) {
+            GpuTriangleShading sh = triangleShading[hit.index];
+            if (HAS_VERTEX_NORMALS && sh.n0.w != 0.0)
+                s.shadingNormal = normalize(b0 * sh.n0.xyz + b1 * sh.n1.xyz + b2 * sh.n2.xyz);
+            if (HAS_TEXTURES && sh.n1.w != 0.0)
+                s.uv = b0 * sh.uv01.xy + b1 * sh.uv01.zw + b2 * sh.uv2.xy;
+        }
+        s.material = uint(tri.v0.w);
+    }
+    return s;
+}
+
+// Bilinear lookup with wrap-around; v = 0 is the image's bottom row, texels are stored top row
+// first.
+vec3 textureColor(uint textureIndex, vec2 uv) {
+    uvec4 info = textures[textureIndex].info;
+    int w = int(info.y), h = int(info.z);
+    vec2 xy = vec2(uv.x * float(w), uv.y * float(h)) - 0.5;
+    vec2 base = floor(xy);
+    vec2 f = xy - base;
+    int x0 = int(base.x) % w, y0 = int(base.y) % h;
+    x0 = x0 < 0 ? x0 + w : x0;
+    y0 = y0 < 0 ? y0 + h : y0;
+    int x1 = (x0 + 1) % w, y1 = (y0 + 1) % h;
+    // Bottom-based rows map to stored rows h-1-y.
+    uint rowA = uint(h - 1 - y0) * uint(w), rowB = uint(h - 1 - y1) * uint(w);
+    vec4 c00 = texels[info.x + rowA + uint(x0)], c10 = texels[info.x + rowA + uint(x1)];
+    vec4 c01 = texels[info.x + rowB + uint(x0)], c11 = texels[info.x + rowB + uint(x1)];
+    return mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y).rgb;
+}
+
+// Offset origin for a ray leaving `position` in `dir`: along the facing geometric normal, by an
+// amount relative to max|P_i| (never a fixed epsilon).
+vec3 offsetOrigin(vec3 position, vec3 facingNormal, vec3 dir) {
+    vec3 a = abs(position);
+    float eps = max(max(a.x, max(a.y, a.z)), float(PRISM_OFFSET_FLOOR)) * float(PRISM_OFFSET_RELATIVE);
+    return position + (dot(dir, facingNormal) >= 0.0 ? eps : -eps) * facingNormal;
+}

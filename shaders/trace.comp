@@ -1,0 +1,195 @@
+#version 460
+// Prism's tracer: one invocation per pixel, one sample per dispatch. Whitted ray tracing
+// (Blinn-Phong + shadows + reflection + refraction) without recursion: the ray tree is walked
+// with an explicit stack. Same semantics as the CPU reference (engine/reference).
+#extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "shared/gpu_types.h"
+#include "shared/sampling.h"
+#include "bindings.glsl"
+#include "loop_budget.glsl"
+#include "intersect.glsl"
+#include "traverse.glsl"
+#include "surface.glsl"
+
+uint gShadowRays = 0u;
+uint gSecondaryRays = 0u;
+
+// Spec camera model: perspective rays leave the eye; parallel rays leave the image plane.
+void cameraRay(vec2 pixelPosition, out vec3 origin, out vec3 dir) {
+    vec2 uv = pixelPosition / vec2(frame.image.xy);
+    float x = 2.0 * uv.x - 1.0, y = 1.0 - 2.0 * uv.y;
+    if (frame.eye.w != 0.0) {
+        origin = frame.eye.xyz + x * frame.du.xyz + y * frame.dv.xyz;
+        dir = frame.forward.xyz;
+    } else {
+        origin = frame.eye.xyz;
+        dir = normalize(frame.forward.xyz + x * frame.du.xyz + y * frame.dv.xyz);
+    }
+}
+
+vec2 samplePosition(uvec2 pixel, uint pixelIndex, uint sampleIndex) {
+    uint spp = frame.image.w;
+    if (spp == 1u)
+        return vec2(pixel) + 0.5;
+    uint columns = strataColumns(spp), rows = strataRows(spp);
+    vec2 stratum = vec2(sampleIndex % columns, sampleIndex / columns);
+    vec2 jitter = vec2(sample01(pixelIndex, sampleIndex, PRISM_DIM_PIXEL_X),
+                       sample01(pixelIndex, sampleIndex, PRISM_DIM_PIXEL_Y));
+    return vec2(pixel) + (stratum + jitter) / vec2(columns, rows);
+}
+
+// Ambient + Blinn-Phong from every light whose shadow ray is clear.
+vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color, GpuMaterial m,
+                 uint pixelIndex, uint sampleIndex, uint depth) {
+    vec3 result = m.colorAmbient.a * color * header.ambient.rgb;
+    uint lightCount = header.counts.w;
+    for (uint l = 0u; l < lightCount; ++l) {
+        if (!loopTick()) break;
+        GpuLight light = lights[l];
+        vec3 toLight = normalize(light.positionRadius.xyz - s.position);
+        float nDotL = dot(n, toLight);
+        if (nDotL > 0.0) {
+            bool visible = true;
+            if (HAS_SHADOWS) {
+                vec3 target = light.positionRadius.xyz;
+                if (HAS_AREA_LIGHTS && light.positionRadius.w > 0.0) {
+                    uint dim = PRISM_DIM_LIGHT_BASE + 2u * ((depth - 1u) * lightCount + l);
+                    float z = 1.0 - 2.0 * sample01(pixelIndex, sampleIndex, dim);
+                    float rxy = sqrt(max(0.0, 1.0 - z * z));
+                    float phi = 2.0 * kPi * sample01(pixelIndex, sampleIndex, dim + 1u);
+                    target += light.positionRadius.w * vec3(rxy * cos(phi), rxy * sin(phi), z);
+                }
+                vec3 origin = offsetOrigin(s.position, facingGeometric, target - s.position);
+                vec3 toTarget = target - origin;
+                float distance = length(toTarget);
+                gShadowRays += 1u;
+                visible = !traceOccluded(origin, toTarget / distance, distance);
+            }
+            if (visible) {
+                vec3 halfway = normalize(toLight + view);
+                result += light.color.rgb *
+                          (m.lighting.x * color * nDotL +
+                           m.lighting.y * pow(max(0.0, dot(n, halfway)), m.lighting.z));
+            }
+        }
+        loopSync();
+    }
+    return result;
+}
+
+struct PendingRay {
+    vec3 origin;
+    vec3 dir;
+    vec3 weight;
+    uint depth;
+};
+
+PendingRay gStack[STACK_SIZE];
+uint gStackSize = 0u;
+
+void pushRay(vec3 origin, vec3 dir, vec3 weight, uint depth) {
+    if (gStackSize < STACK_SIZE) // sized 2 * maxDepth - 1: never full, but never overrun
+        gStack[gStackSize++] = PendingRay(origin, dir, weight, depth);
+}
+
+vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
+    uint maxDepth = frame.control.x;
+    vec3 radiance = vec3(0.0);
+    pushRay(origin, dir, vec3(1.0), 1u);
+    while (gStackSize > 0u) {
+        if (!loopTick()) break;
+        PendingRay ray = gStack[--gStackSize];
+        if (ray.depth > 1u)
+            gSecondaryRays += 1u;
+        Hit hit;
+        if (!traceClosest(ray.origin, ray.dir, kInfinity, hit)) {
+            radiance += ray.weight * header.background.rgb;
+        } else {
+            Surface s = surfaceAt(ray.origin, ray.dir, hit);
+            GpuMaterial m = materials[s.material];
+            vec3 view = -ray.dir;
+            vec3 ng = dot(s.geometricNormal, view) < 0.0 ? -s.geometricNormal : s.geometricNormal;
+            vec3 n = dot(s.shadingNormal, view) < 0.0 ? -s.shadingNormal : s.shadingNormal;
+            vec3 color = m.colorAmbient.rgb;
+            if (HAS_TEXTURES && m.optics.z >= 0.0)
+                color *= textureColor(uint(m.optics.z), s.uv);
+            radiance += ray.weight * directLight(s, ng, n, view, color, m, pixelIndex,
+                                                 sampleIndex, ray.depth);
+            if (ray.depth < maxDepth) {
+                vec3 reflected = reflect(ray.dir, n);
+                if (HAS_REFLECTION && m.lighting.w > 0.0)
+                    pushRay(offsetOrigin(s.position, ng, reflected), reflected,
+                            ray.weight * m.lighting.w, ray.depth + 1u);
+                if (HAS_TRANSMISSION && m.optics.x > 0.0) {
+                    float ior = m.optics.y;
+                    bool entering = dot(ray.dir, s.geometricNormal) < 0.0;
+                    float eta = entering ? 1.0 / ior : ior;
+                    float cosI = -dot(ray.dir, n);
+                    float k = 1.0 - eta * eta * (1.0 - cosI * cosI);
+                    vec3 weight = ray.weight * m.optics.x;
+                    if (k < 0.0) { // total internal reflection
+                        pushRay(offsetOrigin(s.position, ng, reflected), reflected, weight,
+                                ray.depth + 1u);
+                    } else {
+                        float f0 = (ior - 1.0) / (ior + 1.0);
+                        f0 *= f0;
+                        float fresnel = f0 + (1.0 - f0) * pow(1.0 - cosI, 5.0); // Schlick
+                        vec3 refracted = normalize(eta * ray.dir + (eta * cosI - sqrt(k)) * n);
+                        pushRay(offsetOrigin(s.position, ng, reflected), reflected,
+                                weight * fresnel, ray.depth + 1u);
+                        pushRay(offsetOrigin(s.position, ng, refracted), refracted,
+                                weight * (1.0 - fresnel), ray.depth + 1u);
+                    }
+                }
+            }
+        }
+        loopSync();
+    }
+    return radiance;
+}
+
+void addCounter(uint index, uint value) {
+    uint total = subgroupAdd(value);
+    if (subgroupElect() && total != 0u)
+        atomicAdd(counters[index], uint64_t(total));
+}
+
+void main() {
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    bool inside = all(lessThan(pixel, frame.image.xy));
+    uint pixelIndex = pixel.y * frame.image.x + pixel.x;
+    uint sampleIndex = frame.image.z;
+    vec3 radiance = vec3(0.0);
+    if (inside) {
+        vec3 origin, dir;
+        cameraRay(samplePosition(pixel, pixelIndex, sampleIndex), origin, dir);
+        radiance = traceSample(origin, dir, pixelIndex, sampleIndex);
+        if (gOverBudget)
+            radiance = vec3(1.0, 0.0, 1.0); // magenta: the host refuses to save such an image
+        vec4 sum = sampleIndex == 0u ? vec4(0.0) : imageLoad(accumImage, ivec2(pixel));
+        imageStore(accumImage, ivec2(pixel), sum + vec4(radiance, 1.0));
+
+        if (WRITE_AOV && sampleIndex == 0u) {
+            cameraRay(vec2(pixel) + 0.5, origin, dir);
+            Hit hit;
+            vec4 aov = vec4(0.0, 0.0, 0.0, kInfinity);
+            if (traceClosest(origin, dir, kInfinity, hit)) {
+                vec3 ng = surfaceAt(origin, dir, hit).geometricNormal;
+                aov = vec4(dot(ng, dir) > 0.0 ? -ng : ng, hit.t);
+            }
+            imageStore(aovImage, ivec2(pixel), aov);
+        }
+    }
+    addCounter(0u, inside ? 1u : 0u);
+    addCounter(2u, gShadowRays);
+    addCounter(4u, gSecondaryRays);
+    addCounter(6u, gOverBudget ? 1u : 0u);
+}

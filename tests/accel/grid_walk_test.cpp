@@ -1,0 +1,165 @@
+// Grid traversal finds exactly what brute force finds: every place a ray meets a primitive
+// lies in a cell the 3D-DDA visits, within that cell's t-range, and that cell lists it.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "accel/grid.h"
+#include "accel/grid_walk.h"
+#include "grid_test_scenes.h"
+
+namespace prism {
+namespace {
+
+struct Crossing {
+    double t;
+    uint32_t id;
+};
+
+// Every t > 0 where the ray meets a primitive (both sphere roots), brute force over all.
+std::vector<Crossing> allCrossings(const Scene &scene, glm::dvec3 o, glm::dvec3 d) {
+    std::vector<Crossing> out;
+    uint32_t id = 0;
+    for (const Sphere &s : scene.spheres) {
+        glm::dvec3 oc = o - glm::dvec3(s.center);
+        double b = glm::dot(oc, d), c = glm::dot(oc, oc) - double(s.radius) * s.radius;
+        double disc = b * b - c;
+        if (disc >= 0.0)
+            for (double t : {-b - std::sqrt(disc), -b + std::sqrt(disc)})
+                if (t > 0.0)
+                    out.push_back({t, id});
+        ++id;
+    }
+    for (const Triangle &tri : scene.triangles) {
+        // Moeller & Trumbore 1997, in double.
+        glm::dvec3 p0(tri.p[0]), e1 = glm::dvec3(tri.p[1]) - p0, e2 = glm::dvec3(tri.p[2]) - p0;
+        glm::dvec3 pv = glm::cross(d, e2);
+        double det = glm::dot(e1, pv);
+        if (det != 0.0) {
+            glm::dvec3 tv = o - p0;
+            double u = glm::dot(tv, pv) / det;
+            glm::dvec3 qv = glm::cross(tv, e1);
+            double v = glm::dot(d, qv) / det, t = glm::dot(e2, qv) / det;
+            if (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > 0.0)
+                out.push_back({t, id});
+        }
+        ++id;
+    }
+    return out;
+}
+
+struct Visited {
+    uint32_t cell;
+    double tEnter, tExit;
+};
+
+std::vector<Visited> walk(const Grid &g, glm::dvec3 o, glm::dvec3 d) {
+    std::vector<Visited> cells;
+    walkGrid(g, o, d, std::numeric_limits<double>::infinity(), [&](uint32_t c, double a, double b) {
+        cells.push_back({c, a, b});
+        return true;
+    });
+    return cells;
+}
+
+bool listed(const Grid &g, uint32_t cell, uint32_t id) {
+    auto first = g.cellPrimitives.begin() + g.cellStart[cell];
+    auto last = g.cellPrimitives.begin() + g.cellStart[cell + 1];
+    return std::find(first, last, id) != last;
+}
+
+glm::dvec3 randomDirection(std::mt19937 &rng) {
+    std::normal_distribution<double> n;
+    glm::dvec3 d;
+    do
+        d = {n(rng), n(rng), n(rng)};
+    while (glm::length(d) < 1e-6);
+    return glm::normalize(d);
+}
+
+void checkRays(const Scene &scene, const Grid &g, unsigned seed, int rays) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> coord(-14.0, 14.0);
+    int crossingsChecked = 0;
+    for (int r = 0; r < rays; ++r) {
+        glm::dvec3 o(coord(rng), coord(rng), coord(rng)), d = randomDirection(rng);
+        if (r % 7 == 0) // axis-aligned rays exercise the zero-step axes
+            d = glm::dvec3(0.0), d[r % 3] = (r % 2) ? 1.0 : -1.0;
+        std::vector<Visited> cells = walk(g, o, d);
+        // The walk is a connected sequence of cells with increasing, abutting t-ranges.
+        for (size_t i = 0; i + 1 < cells.size(); ++i) {
+            ASSERT_LE(cells[i].tEnter, cells[i].tExit);
+            ASSERT_NEAR(cells[i].tExit, cells[i + 1].tEnter, 1e-9 * (1.0 + cells[i].tExit));
+        }
+        for (const Crossing &c : allCrossings(scene, o, d)) {
+            double tol = 1e-7 * (1.0 + c.t);
+            bool found = false;
+            for (const Visited &v : cells)
+                found = found || (c.t >= v.tEnter - tol && c.t <= v.tExit + tol &&
+                                  listed(g, v.cell, c.id));
+            ASSERT_TRUE(found) << "ray " << r << ": primitive " << c.id << " at t=" << c.t
+                               << " not in any visited cell";
+            ++crossingsChecked;
+        }
+        // Closest hit through the grid (accept a hit once the walk has reached its cell), as
+        // the shader does, equals the brute-force closest hit.
+        std::vector<Crossing> all = allCrossings(scene, o, d);
+        auto nearest = std::min_element(all.begin(), all.end(),
+                                        [](Crossing a, Crossing b) { return a.t < b.t; });
+        double best = std::numeric_limits<double>::infinity();
+        walkGrid(g, o, d, best, [&](uint32_t cell, double, double tExit) {
+            for (const Crossing &c : all)
+                if (listed(g, cell, c.id))
+                    best = std::min(best, c.t);
+            return best > tExit;
+        });
+        if (nearest == all.end())
+            EXPECT_TRUE(std::isinf(best));
+        else
+            EXPECT_EQ(best, nearest->t) << "ray " << r;
+    }
+    EXPECT_GT(crossingsChecked, rays / 10); // the rays did meet primitives
+}
+
+TEST(GridWalk, FindsEveryCrossingOnRandomRaysAutoGrid) {
+    Scene scene = test::randomSpheresAndTriangles(21, 200, 400);
+    checkRays(scene, buildGrid(scene), 1, 3000);
+}
+
+TEST(GridWalk, FindsEveryCrossingOnRandomRaysAnisotropicGrid) {
+    Scene scene = test::randomSpheresAndTriangles(22, 100, 300);
+    checkRays(scene, buildGrid(scene, parseGridOption("17x3x29")), 2, 3000);
+}
+
+TEST(GridWalk, FindsEveryCrossingInAFlatScene) {
+    Scene scene = test::randomSpheresAndTriangles(23, 0, 500);
+    for (Triangle &t : scene.triangles)
+        for (glm::vec3 &p : t.p)
+            p.y = 0.25f; // every triangle in one plane: a 2D grid
+    Grid g = buildGrid(scene);
+    EXPECT_EQ(g.resolution.y, 1);
+    checkRays(scene, g, 3, 3000);
+}
+
+TEST(GridWalk, StartsInsideTheGridAtTheOriginsCell) {
+    Scene scene = test::randomSpheresAndTriangles(24, 50, 0);
+    Grid g = buildGrid(scene, parseGridOption("10"));
+    glm::dvec3 centre = 0.5 * (glm::dvec3(g.boundsMin) + glm::dvec3(g.boundsMax));
+    std::vector<Visited> cells = walk(g, centre, {1.0, 0.0, 0.0});
+    ASSERT_EQ(cells.size(), 5u); // from the middle to the +x face of a 10-cell row
+    EXPECT_EQ(cells.front().cell, g.cellIndex({5, 5, 5}));
+    EXPECT_EQ(cells.front().tEnter, 0.0);
+}
+
+TEST(GridWalk, MissingRayVisitsNothing) {
+    Scene scene = test::randomSpheresAndTriangles(25, 50, 0);
+    Grid g = buildGrid(scene);
+    EXPECT_TRUE(walk(g, {100.0, 100.0, 100.0}, {1.0, 0.0, 0.0}).empty());
+    EXPECT_TRUE(walk(g, {100.0, 0.0, 0.0}, {1.0, 0.0, 0.0}).empty()); // pointing away
+}
+
+} // namespace
+} // namespace prism

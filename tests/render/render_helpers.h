@@ -1,0 +1,46 @@
+#pragma once
+// Rendering one scene on both backends, for comparisons.
+#include <vector>
+
+#include "accel/grid.h"
+#include "reference/reference_renderer.h"
+#include "render/ray_tracer.h"
+#include "scene/scene.h"
+
+namespace prism::test {
+
+struct GpuRender {
+    TracedImage image;
+    FrameResult frame;
+};
+
+inline GpuRender renderGpu(vk::Context &context, const Scene &scene, uint32_t width,
+                           uint32_t height, uint32_t spp = 1, uint32_t depth = 5,
+                           GridOptions gridOptions = {}, TracerOptions options = {}) {
+    Grid grid = buildGrid(scene, gridOptions);
+    options.maxDepth = depth;
+    RayTracer tracer(context, scene, grid, width, height, options);
+    GpuRender out;
+    out.frame = tracer.renderFrame(scene.camera, spp);
+    out.image = tracer.readback(spp);
+    return out;
+}
+
+inline std::vector<float> renderCpu(const Scene &scene, int width, int height, uint32_t spp = 1,
+                                    uint32_t depth = 5, RayCounts *rays = nullptr) {
+    RenderSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.samplesPerPixel = spp;
+    settings.maxDepth = depth;
+    RenderedImage image = renderReference(scene, settings);
+    if (rays)
+        *rays = image.rays;
+    std::vector<float> rgba;
+    rgba.reserve(image.rgba.size() * 4);
+    for (const glm::vec4 &p : image.rgba)
+        rgba.insert(rgba.end(), {p.r, p.g, p.b, p.a});
+    return rgba;
+}
+
+} // namespace prism::test

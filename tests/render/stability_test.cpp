@@ -1,0 +1,195 @@
+// Where ray tracers fail: scale, distance from the origin, shared edges and vertices, grazing
+// rays, and the grid itself. All on the shader, on lavapipe, validation on.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "gpu_fixture.h"
+#include "image_compare.h"
+#include "render_helpers.h"
+#include "test_scenes.h"
+
+namespace prism::test {
+namespace {
+
+class Stability : public GpuTest {};
+
+// The same scene at 1e-3, 1 and 1e3 and moved 1e4 away must give the same picture: offsets
+// are relative to |P|, so no acne appears and no contact shadow is lost at any scale. Allowed:
+// silhouette pixels where float rounding of the moved geometry picks the other side (0.5%).
+TEST_F(Stability, SameImageAtEveryScaleAndDistance) {
+    const uint32_t w = 96, h = 72;
+    Scene base = stabilityScene();
+    TracedImage reference = renderGpu(context(), base, w, h).image;
+    struct Variant {
+        float scale;
+        glm::vec3 offset;
+    };
+    for (Variant v : {Variant{1e-3f, glm::vec3(0.0f)}, Variant{1e3f, glm::vec3(0.0f)},
+                      Variant{1.0f, glm::vec3(1e4f, 1e4f, 1e4f)},
+                      Variant{1e-3f, glm::vec3(10.0f, -10.0f, 10.0f)}}) {
+        Scene scene = transformed(base, v.scale, v.offset);
+        TracedImage image = renderGpu(context(), scene, w, h).image;
+        ImageDifference d = compareImages(image.rgba, reference.rgba, 0.02);
+        SCOPED_TRACE("scale " + std::to_string(v.scale) + " offset " +
+                     std::to_string(v.offset.x));
+        EXPECT_EQ(d.nonFinite, 0u);
+        EXPECT_LE(d.differingFraction(), 0.005) << describe(d);
+    }
+}
+
+// A regular octahedron seen head-on through pixel centres that fall exactly on its edges and
+// vertices (ortho camera, 0.25-unit pixels): every pixel strictly inside the silhouette must
+// hit, with any grid (edges then also lie on cell faces).
+TEST_F(Stability, ClosedMeshNeverLeaksAtEdgesOrVertices) {
+    Scene scene;
+    scene.materials.push_back(Material{"default"});
+    uint32_t white = addMaterial(scene, "white", {1.0f, 1.0f, 1.0f});
+    scene.materials[white].ambient = 1.0f;
+    scene.materials[white].specular = 0.0f;
+    scene.background = {1.0f, 0.0f, 0.0f};
+    addOctahedron(scene, glm::vec3(0.0f), 1.0f, white);
+    const uint32_t size = 33; // centres at -4.0, -3.75, ..., 4.0 with ortho height 8.25
+    scene.camera.orthoHeight = 8.25f;
+    struct View {
+        glm::vec3 eye, up;
+    };
+    const View views[] = {{{0, 0, 5}, {0, 1, 0}},
+                          {{5, 0, 0}, {0, 1, 0}},
+                          {{0, 5, 0}, {0, 0, -1}},
+                          {{0, 0, -5}, {0, 1, 0}}};
+    for (GridOptions::Mode mode : {GridOptions::Mode::Off, GridOptions::Mode::Auto}) {
+        for (const View &view : views) {
+            glm::vec3 eye = view.eye;
+            scene.camera.eye = eye;
+            scene.camera.up = view.up;
+            scene.camera.look = glm::vec3(0.0f);
+            // Octahedron of radius 4 so edges cross many pixel centres.
+            Scene big = transformed(scene, 4.0f, glm::vec3(0.0f));
+            big.camera.orthoHeight = 8.25f;
+            GridOptions grid;
+            grid.mode = mode;
+            TracedImage image = renderGpu(context(), big, size, size, 1, 1, grid).image;
+            int leaks = 0;
+            for (uint32_t j = 0; j < size; ++j)
+                for (uint32_t i = 0; i < size; ++i) {
+                    float x = -4.0f + 0.25f * float(i), y = 4.0f - 0.25f * float(j);
+                    if (std::abs(x) + std::abs(y) >= 3.99f)
+                        continue; // on or outside the silhouette
+                    const float *p = &image.rgba[(j * size + i) * 4];
+                    leaks += (p[1] < 0.5f) ? 1 : 0; // background is red: green = 0
+                }
+            EXPECT_EQ(leaks, 0) << "view " << eye.x << "," << eye.y << "," << eye.z;
+        }
+    }
+}
+
+// A flat square made of many triangles sharing edges and vertices, all on pixel centres.
+TEST_F(Stability, SharedEdgesOfATriangleFanNeverCrack) {
+    Scene scene;
+    scene.materials.push_back(Material{"default"});
+    uint32_t white = addMaterial(scene, "white", {1.0f, 1.0f, 1.0f});
+    scene.materials[white].ambient = 1.0f;
+    scene.background = {1.0f, 0.0f, 0.0f};
+    // 8x8 quads over [-2, 2]^2, each split into two triangles, plus a fan around the centre.
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            glm::vec3 a(-2.0f + 0.5f * x, -2.0f + 0.5f * y, 0.0f);
+            glm::vec3 b = a + glm::vec3(0.5f, 0, 0), c = a + glm::vec3(0.5f, 0.5f, 0);
+            glm::vec3 d = a + glm::vec3(0, 0.5f, 0);
+            addTriangle(scene, a, b, c, white);
+            addTriangle(scene, a, c, d, white);
+        }
+    scene.camera.eye = {0.0f, 0.0f, 3.0f};
+    scene.camera.look = {0.0f, 0.0f, 0.0f};
+    scene.camera.orthoHeight = 4.25f; // 17 px: centres at -2, -1.75, ..., 2
+    for (const char *grid : {"off", "auto", "4", "3x5x1"}) {
+        TracedImage image =
+            renderGpu(context(), scene, 17, 17, 1, 1, parseGridOption(grid)).image;
+        int leaks = 0;
+        for (uint32_t j = 1; j + 1 < 17; ++j)
+            for (uint32_t i = 1; i + 1 < 17; ++i)
+                leaks += image.rgba[(j * 17 + i) * 4 + 1] < 0.5f ? 1 : 0;
+        EXPECT_EQ(leaks, 0) << "grid " << grid;
+    }
+}
+
+// Rays that skim a plane towards the horizon and sphere silhouettes: finite values, no
+// self-hits, and agreement with the reference.
+TEST_F(Stability, GrazingRaysOnPlanesAndSpheres) {
+    Scene scene = stabilityScene();
+    scene.camera.eye = {0.0f, 0.001f, 12.0f}; // a millimetre above an infinite floor
+    scene.camera.look = {0.0f, 0.0f, -100.0f};
+    scene.camera.fovDegrees = 20.0f;
+    TracedImage gpu = renderGpu(context(), scene, 64, 48).image;
+    std::vector<float> cpu = renderCpu(scene, 64, 48);
+    ImageDifference d = compareImages(gpu.rgba, cpu, 0.02);
+    EXPECT_EQ(d.nonFinite, 0u);
+    EXPECT_LE(d.differingFraction(), 0.02) << describe(d);
+}
+
+// The grid changes speed, never the picture: grid off, auto and fixed resolutions agree.
+TEST_F(Stability, GridResolutionDoesNotChangeTheImage) {
+    Scene scene = stabilityScene();
+    for (int k = 0; k < 40; ++k) // a cloud of small spheres spread over many cells
+        scene.spheres.push_back(Sphere{{-3.0f + 0.15f * k, 0.2f + 0.05f * (k % 7),
+                                        2.0f - 0.1f * (k % 11)},
+                                       0.12f, 4});
+    TracedImage off = renderGpu(context(), scene, 64, 48, 1, 5, parseGridOption("off")).image;
+    for (const char *grid : {"auto", "1", "10", "7x3x5", "40"}) {
+        TracedImage image = renderGpu(context(), scene, 64, 48, 1, 5, parseGridOption(grid)).image;
+        ImageDifference d = compareImages(image.rgba, off.rgba, 1e-4);
+        EXPECT_LE(d.differing, 2u) << "grid " << grid << ": " << describe(d);
+    }
+}
+
+// lavapipe cuts shader loops at 65,535 iterations without a word; the tracer counts its own
+// and reports pixels it had to stop, never returning them as if they were right.
+TEST_F(Stability, LoopBudgetIsReportedNotSilent) {
+    Scene scene = stabilityScene();
+    TracerOptions tight;
+    tight.loopBudget = 40; // far too few for primary + shadow + secondary rays
+    GpuRender cut = renderGpu(context(), scene, 32, 24, 1, 5, parseGridOption("off"), tight);
+    EXPECT_GT(cut.frame.overBudgetPixels, 0u);
+    TracerOptions ample;
+    ample.loopBudget = 60000;
+    GpuRender fine = renderGpu(context(), scene, 32, 24, 1, 5, parseGridOption("off"), ample);
+    EXPECT_EQ(fine.frame.overBudgetPixels, 0u);
+}
+
+// On lavapipe itself: with 33,000 spheres tested by every primary and shadow ray (no grid), the
+// loops need ~66,000 iterations. Unchecked, lavapipe cuts them short and pixels silently change;
+// with the tracer's budget every such pixel is reported instead.
+TEST_F(Stability, LavapipeLoopCutIsAlwaysCaught) {
+    if (!context().isLavapipe())
+        GTEST_SKIP() << "only lavapipe limits shader loops";
+    Scene scene;
+    scene.materials.push_back(Material{"default"});
+    scene.camera.eye = {0.0f, 0.0f, 5.0f};
+    scene.lights.push_back(Light{{0.0f, 0.0f, 10.0f}, {1.0f, 1.0f, 1.0f}, 0.0f});
+    for (int i = 0; i < 33000; ++i) // far away: never hit, but tested by every ray
+        scene.spheres.push_back(Sphere{{1000.0f + float(i), 1000.0f, 1000.0f}, 0.1f, 0});
+    scene.spheres.push_back(Sphere{{0.0f, 0.0f, 0.0f}, 1.5f, 0}); // tested last
+    scene.spheres.push_back(Sphere{{0.5f, 0.0f, 7.0f}, 0.5f, 0}); // casts a shadow on it
+    std::vector<float> truth = renderCpu(scene, 32, 32, 1, 1);
+
+    TracerOptions unchecked;
+    unchecked.loopBudget = 0;
+    GpuRender silent = renderGpu(context(), scene, 32, 32, 1, 1, parseGridOption("off"), unchecked);
+    ImageDifference d = compareImages(silent.image.rgba, truth, 0.02);
+    EXPECT_GT(d.differing, 0u) << "lavapipe no longer cuts loops: the budget may be relaxed";
+
+    GpuRender checked = renderGpu(context(), scene, 32, 32, 1, 1, parseGridOption("off"));
+    int wrongAndUnreported = 0;
+    for (size_t p = 0; p < 32 * 32; ++p) {
+        const float *g = &checked.image.rgba[p * 4];
+        bool magenta = g[0] == 1.0f && g[1] == 0.0f && g[2] == 1.0f;
+        bool wrong = std::abs(g[0] - truth[p * 4]) > 0.02f;
+        wrongAndUnreported += (wrong && !magenta) ? 1 : 0;
+    }
+    EXPECT_GT(checked.frame.overBudgetPixels, 0u);
+    EXPECT_EQ(wrongAndUnreported, 0);
+}
+
+} // namespace
+} // namespace prism::test

@@ -1,0 +1,135 @@
+// prism-render as a user meets it: help, errors with FILE:LINE, exit codes, no partial output,
+// the --stats line and the EXR it writes.
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+
+#include "io/image_reader.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+    int exitCode;
+    std::string out; // stdout and stderr together
+    std::string stdoutOnly;
+};
+
+Run run(const std::string &args) {
+    fs::path errFile = fs::temp_directory_path() / ("prism-cli-" + std::to_string(::getpid()));
+    std::string command = std::string(PRISM_RENDER_EXE) + " " + args + " 2>" + errFile.string();
+    Run result{};
+    FILE *pipe = ::popen(command.c_str(), "r");
+    std::array<char, 4096> buffer;
+    size_t n;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+        result.stdoutOnly.append(buffer.data(), n);
+    int status = ::pclose(pipe);
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream err(errFile);
+    result.out = result.stdoutOnly + std::string(std::istreambuf_iterator<char>(err), {});
+    fs::remove(errFile);
+    return result;
+}
+
+class PrismRenderCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("prism-cli-test-" + std::to_string(::getpid()) + "-" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path write(const std::string &name, const std::string &text) {
+        std::ofstream(dir_ / name) << text;
+        return dir_ / name;
+    }
+    size_t filesInDir() const {
+        return size_t(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
+    }
+    fs::path dir_;
+};
+
+TEST_F(PrismRenderCli, HelpListsEveryOption) {
+    Run r = run("--help");
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char *option : {"--size", "--spp", "--depth", "--grid", "--aov", "--backend",
+                               "--repeat", "--stats", "--quiet"})
+        EXPECT_NE(r.out.find(option), std::string::npos) << option;
+}
+
+TEST_F(PrismRenderCli, SceneErrorNamesFileAndLineAndWritesNothing) {
+    fs::path scene = write("bad.scene", "# fine\nsphere 0 0 0 1\nsphere 0 0 0 -1\n");
+    Run r = run(scene.string() + " -o " + (dir_ / "out.png").string() + " --size 8x8");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find(scene.string() + ":3:"), std::string::npos) << r.out;
+    EXPECT_EQ(filesInDir(), 1u) << "only the scene itself: no image, no temporary file";
+}
+
+TEST_F(PrismRenderCli, BadOptionsFailClearly) {
+    fs::path scene = write("ok.scene", "sphere 0 0 0 1\n");
+    std::string base = scene.string() + " -o " + (dir_ / "out.png").string();
+    for (const char *bad : {" --size 8by8", " --grid 0", " --grid 2x2", " --spp 0",
+                            " --backend metal", " --aov depth"}) {
+        Run r = run(base + bad);
+        EXPECT_NE(r.exitCode, 0) << bad;
+        EXPECT_FALSE(r.out.empty()) << bad;
+    }
+    Run wrongExt = run(scene.string() + " -o " + (dir_ / "out.jpg").string());
+    EXPECT_NE(wrongExt.exitCode, 0);
+    EXPECT_NE(wrongExt.out.find(".exr"), std::string::npos);
+    Run missing = run((dir_ / "nope.scene").string() + " -o " + (dir_ / "x.png").string());
+    EXPECT_NE(missing.exitCode, 0);
+    EXPECT_NE(missing.out.find("nope.scene"), std::string::npos);
+    EXPECT_EQ(filesInDir(), 1u);
+}
+
+TEST_F(PrismRenderCli, StatsLineAndExrWithAovsAndMetadata) {
+    fs::path scene = write("ok.scene", "camera eye 0 0 5 look 0 0 0\nlight 2 2 5\n"
+                                       "sphere 0 0 0 1\nplane 0 -1 0 0 1 0\n");
+    fs::path out = dir_ / "out.exr";
+    Run r = run(scene.string() + " -o " + out.string() +
+                " --size 24x16 --spp 2 --repeat 3 --aov z,normal --stats --validation");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    nlohmann::json stats = nlohmann::json::parse(r.stdoutOnly);
+    for (const char *key : {"build_ms", "trace_ms", "trace_ms_median", "mrays_per_s", "rays"})
+        EXPECT_TRUE(stats.contains(key)) << key;
+    EXPECT_EQ(stats["rays"]["primary"].get<uint64_t>(), 24u * 16u * 2u);
+    EXPECT_GT(stats["rays"]["shadow"].get<uint64_t>(), 0u);
+    EXPECT_EQ(stats["frames"].get<int>(), 3);
+
+    prism::LoadedImage image = prism::readImage(out);
+    EXPECT_EQ(image.width, 24);
+    EXPECT_EQ(image.height, 16);
+    std::vector<std::string> expected = {"R", "G", "B", "A", "Z", "N.X", "N.Y", "N.Z"};
+    EXPECT_EQ(image.channelNames, expected);
+    bool hasCommandLine = false, hasDevice = false;
+    for (const auto &[name, value] : image.metadata.strings) {
+        hasCommandLine = hasCommandLine || (name == "prism:commandLine" &&
+                                            value.find("--aov z,normal") != std::string::npos);
+        hasDevice = hasDevice || name == "prism:device";
+    }
+    EXPECT_TRUE(hasCommandLine);
+    EXPECT_TRUE(hasDevice);
+}
+
+TEST_F(PrismRenderCli, CpuBackendWritesPng) {
+    fs::path scene = write("ok.scene", "light 2 2 5\nsphere 0 0 0 1\n");
+    fs::path out = dir_ / "out.png";
+    Run r = run(scene.string() + " -o " + out.string() + " --size 16x12 --backend cpu --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    prism::LoadedImage image = prism::readImage(out);
+    EXPECT_EQ(image.channels, 3);
+    EXPECT_GT(image.pixels[(6 * 16 + 8) * 3], 0.1f) << "the lit sphere is in the middle";
+}
+
+} // namespace

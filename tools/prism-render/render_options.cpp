@@ -1,0 +1,115 @@
+#include "render_options.h"
+
+#include <cstdlib>
+#include <regex>
+
+#include <CLI/CLI.hpp>
+
+#include "core/error.h"
+
+namespace prism {
+namespace {
+
+void parseSize(const std::string &text, uint32_t &width, uint32_t &height) {
+    std::smatch m;
+    static const std::regex pattern("([0-9]{1,5})x([0-9]{1,5})");
+    if (!std::regex_match(text, m, pattern))
+        throw Error("--size must look like 1024x768, got \"" + text + "\"");
+    width = uint32_t(std::stoul(m[1]));
+    height = uint32_t(std::stoul(m[2]));
+    if (width < 1 || height < 1 || width > 16384 || height > 16384)
+        throw Error("--size must be between 1x1 and 16384x16384, got \"" + text + "\"");
+}
+
+void parseAovs(const std::string &text, RenderOptions &options) {
+    size_t start = 0;
+    while (start <= text.size()) {
+        size_t comma = text.find(',', start);
+        std::string name = text.substr(start, comma == std::string::npos ? comma : comma - start);
+        if (name == "z")
+            options.aovDepth = true;
+        else if (name == "normal")
+            options.aovNormal = true;
+        else
+            throw Error("--aov takes a comma-separated list of z and normal, got \"" + text +
+                        "\"");
+        if (comma == std::string::npos)
+            break;
+        start = comma + 1;
+    }
+}
+
+std::string lowerExtension(const std::filesystem::path &path) {
+    std::string ext = path.extension().string();
+    for (char &c : ext)
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+} // namespace
+
+bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exitCode) {
+    CLI::App app{"prism-render: renders a .scene file to an EXR (linear float) or PNG (sRGB) "
+                 "image with Prism's Vulkan compute ray tracer or its CPU reference."};
+    app.set_version_flag("--version", "prism-render 0.1.0");
+    std::string scene, output, size = "1024x768", aov, backend = "vulkan";
+    app.add_option("SCENE", scene, "Scene file (format: docs/scene-format.md)")->required();
+    app.add_option("-o,--output", output, "Output image: .exr (float RGBA + AOVs) or .png")
+        ->required();
+    app.add_option("--size", size, "Image size WxH")->default_val("1024x768");
+    app.add_option("--spp", options.samplesPerPixel,
+                   "Samples per pixel (stratified anti-aliasing, soft shadows)")
+        ->check(CLI::Range(1u, 65536u))
+        ->default_val(1);
+    app.add_option("--depth", options.maxDepth,
+                   "Maximum ray depth: 1 = primary and shadow rays only")
+        ->check(CLI::Range(1u, 16u))
+        ->default_val(5);
+    app.add_option("--grid", options.gridText,
+                   "Grid resolution: auto (sized to the scene), off (test every primitive), N "
+                   "(N^3 cells) or NxNyNz")
+        ->default_val("auto");
+    app.add_option("--aov", aov, "Extra EXR channels: z (distance, Z), normal (N.X N.Y N.Z)");
+    app.add_option("--backend", backend, "vulkan (GPU or lavapipe) or cpu (double-precision "
+                                         "reference)")
+        ->check(CLI::IsMember({"vulkan", "cpu"}))
+        ->default_val("vulkan");
+    app.add_option("--repeat", options.repeat,
+                   "Timed frames after one warm-up frame (trace_ms is the best)")
+        ->check(CLI::Range(1u, 10000u))
+        ->default_val(1);
+    app.add_flag("--stats", options.stats, "Print one JSON line of timings and ray counts");
+    app.add_flag("--quiet", options.quiet, "No progress or warnings on stderr");
+    app.add_flag("--validation", options.validation,
+                 "Enable Vulkan validation layers (also PRISM_VALIDATION=1)");
+    app.add_option("--device", options.deviceFilter,
+                   "Use the first Vulkan device whose name contains this text");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError &e) {
+        exitCode = app.exit(e);
+        return false;
+    }
+    options.scenePath = scene;
+    options.outputPath = output;
+    parseSize(size, options.width, options.height);
+    options.grid = parseGridOption(options.gridText);
+    if (!aov.empty())
+        parseAovs(aov, options);
+    options.backend = backend == "cpu" ? Backend::Cpu : Backend::Vulkan;
+    std::string ext = lowerExtension(options.outputPath);
+    if (ext != ".exr" && ext != ".png")
+        throw Error("output " + output + ": unsupported extension; use .exr or .png");
+    if ((options.aovDepth || options.aovNormal) && ext != ".exr")
+        throw Error("--aov needs an .exr output (PNG holds colour only)");
+#ifdef PRISM_DEFAULT_VALIDATION
+    options.validation = true;
+#endif
+    if (const char *env = std::getenv("PRISM_VALIDATION"); env && std::string(env) == "1")
+        options.validation = true;
+    for (int i = 0; i < argc; ++i)
+        options.commandLine += (i ? " " : "") + std::string(argv[i]);
+    return true;
+}
+
+} // namespace prism

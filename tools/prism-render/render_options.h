@@ -1,0 +1,35 @@
+#pragma once
+// prism-render's command line, parsed and checked before any work starts.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "accel/grid.h"
+
+namespace prism {
+
+enum class Backend { Vulkan, Cpu };
+
+struct RenderOptions {
+    std::filesystem::path scenePath;
+    std::filesystem::path outputPath;
+    uint32_t width = 1024, height = 768;
+    uint32_t samplesPerPixel = 1;
+    uint32_t maxDepth = 5;
+    GridOptions grid;
+    std::string gridText = "auto";
+    bool aovDepth = false, aovNormal = false;
+    Backend backend = Backend::Vulkan;
+    uint32_t repeat = 1;
+    bool stats = false;
+    bool quiet = false;
+    bool validation = false;
+    std::string deviceFilter;
+    std::string commandLine; // as typed, for the image's metadata
+};
+
+// Parses argv. Returns false when the program should exit with `exitCode` (help, bad usage);
+// messages have been printed then.
+bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exitCode);
+
+} // namespace prism

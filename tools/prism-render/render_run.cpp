@@ -1,0 +1,179 @@
+#include "render_run.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "core/timer.h"
+#include "io/image_writer.h"
+#include "progress_line.h"
+#include "reference/reference_renderer.h"
+#include "render/ray_tracer.h"
+#include "scene/scene_loader.h"
+#include "vk/context.h"
+
+namespace prism {
+namespace {
+
+// What one backend produced: the image and the per-frame timings.
+struct RenderOutcome {
+    OutputImage image;
+    std::vector<double> frameMs; // timed frames only (after warm-up)
+    RayCounts rays;              // of one frame
+    std::string device;
+};
+
+std::string resolutionText(const glm::ivec3 &r) {
+    return std::to_string(r.x) + "x" + std::to_string(r.y) + "x" + std::to_string(r.z);
+}
+
+RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const Grid &grid) {
+    vk::ContextOptions contextOptions;
+    contextOptions.validation = o.validation;
+    contextOptions.deviceNameFilter = o.deviceFilter;
+    vk::Context context(contextOptions);
+
+    TracerOptions tracerOptions;
+    tracerOptions.maxDepth = o.maxDepth;
+    tracerOptions.writeAov = o.aovDepth || o.aovNormal;
+    RayTracer tracer(context, scene, grid, o.width, o.height, tracerOptions);
+
+    RenderOutcome out;
+    out.device = context.deviceName();
+    ProgressLine progress(!o.quiet);
+    // Frame 0 warms up (lavapipe compiles the shader inside the first dispatch).
+    for (uint32_t frame = 0; frame <= o.repeat; ++frame) {
+        std::string label = frame == 0 ? "warm-up frame" : "frame " + std::to_string(frame) + "/" +
+                                                               std::to_string(o.repeat);
+        FrameResult result = tracer.renderFrame(
+            scene.camera, o.samplesPerPixel, [&](double f) { progress.update(label, f); });
+        if (result.overBudgetPixels > 0)
+            throw Error(std::to_string(result.overBudgetPixels) +
+                        " pixels needed more shader loop iterations than " + out.device +
+                        " runs (lavapipe stops a shader after 65,535), so the image would be "
+                        "wrong; use a finer grid (--grid auto), fewer primitives or a lower "
+                        "--depth");
+        if (frame > 0)
+            out.frameMs.push_back(result.gpuMs);
+        out.rays = result.rays;
+    }
+    progress.finish();
+    TracedImage traced = tracer.readback(o.samplesPerPixel);
+    if (context.validationMessageCount() > 0)
+        throw Error(std::to_string(context.validationMessageCount()) +
+                    " Vulkan validation messages (printed above); refusing to write the image");
+    out.image.width = int(traced.width);
+    out.image.height = int(traced.height);
+    out.image.rgba = std::move(traced.rgba);
+    if (o.aovDepth)
+        out.image.depth = std::move(traced.depth);
+    if (o.aovNormal)
+        out.image.normal = std::move(traced.normal);
+    return out;
+}
+
+RenderOutcome renderOnCpu(const RenderOptions &o, const Scene &scene) {
+    RenderSettings settings;
+    settings.width = int(o.width);
+    settings.height = int(o.height);
+    settings.samplesPerPixel = o.samplesPerPixel;
+    settings.maxDepth = o.maxDepth;
+    RenderOutcome out;
+    out.device = "CPU reference (double precision)";
+    ProgressLine progress(!o.quiet);
+    RenderedImage rendered;
+    for (uint32_t frame = 1; frame <= o.repeat; ++frame) {
+        std::string label = "frame " + std::to_string(frame) + "/" + std::to_string(o.repeat);
+        Timer timer;
+        rendered = renderReference(scene, settings, [&](double f) { progress.update(label, f); });
+        out.frameMs.push_back(timer.elapsedMs());
+    }
+    progress.finish();
+    out.rays = rendered.rays;
+    out.image.width = rendered.width;
+    out.image.height = rendered.height;
+    out.image.rgba.reserve(rendered.rgba.size() * 4);
+    for (const glm::vec4 &p : rendered.rgba)
+        out.image.rgba.insert(out.image.rgba.end(), {p.r, p.g, p.b, p.a});
+    if (o.aovDepth)
+        out.image.depth = rendered.depth;
+    if (o.aovNormal)
+        for (const glm::vec3 &n : rendered.normal)
+            out.image.normal.insert(out.image.normal.end(), {n.x, n.y, n.z});
+    return out;
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+} // namespace
+
+void runRender(const RenderOptions &o) {
+    Timer loadTimer;
+    Scene scene = loadScene(o.scenePath);
+    double loadMs = loadTimer.elapsedMs();
+    if (!o.quiet)
+        for (const std::string &warning : scene.warnings)
+            std::fprintf(stderr, "%s\n", warning.c_str());
+
+    Timer buildTimer;
+    Grid grid = buildGrid(scene, o.grid);
+    double buildMs = buildTimer.elapsedMs();
+
+    RenderOutcome out = o.backend == Backend::Cpu ? renderOnCpu(o, scene)
+                                                  : renderOnVulkan(o, scene, grid);
+    double bestMs = *std::min_element(out.frameMs.begin(), out.frameMs.end());
+    double medianMs = median(out.frameMs);
+    double mraysPerSecond = double(out.rays.total()) / (bestMs * 1e3);
+
+    ImageMetadata meta;
+    meta.strings = {{"prism:commandLine", o.commandLine},
+                    {"prism:scene", o.scenePath.string()},
+                    {"prism:device", out.device},
+                    {"prism:backend", o.backend == Backend::Cpu ? "cpu" : "vulkan"},
+                    {"prism:gridResolution", o.backend == Backend::Cpu
+                                                 ? std::string("none (brute force)")
+                                                 : resolutionText(grid.resolution)},
+                    {"prism:raysPrimary", std::to_string(out.rays.primary)},
+                    {"prism:raysShadow", std::to_string(out.rays.shadow)},
+                    {"prism:raysSecondary", std::to_string(out.rays.secondary)}};
+    meta.floats = {{"prism:renderTimeMs", float(bestMs)},
+                   {"prism:renderTimeMedianMs", float(medianMs)},
+                   {"prism:gridBuildMs", float(buildMs)},
+                   {"prism:mraysPerSecond", float(mraysPerSecond)}};
+    meta.ints = {{"prism:samplesPerPixel", int(o.samplesPerPixel)},
+                 {"prism:maxDepth", int(o.maxDepth)}};
+    writeImage(o.outputPath, out.image, meta);
+
+    if (o.stats) {
+        nlohmann::json stats = {
+            {"scene", o.scenePath.string()},
+            {"backend", o.backend == Backend::Cpu ? "cpu" : "vulkan"},
+            {"device", out.device},
+            {"width", o.width},
+            {"height", o.height},
+            {"spp", o.samplesPerPixel},
+            {"depth", o.maxDepth},
+            {"primitives", scene.finitePrimitiveCount() + scene.planes.size()},
+            {"grid", resolutionText(grid.resolution)},
+            {"grid_max_per_cell", grid.maxPerCell},
+            {"load_ms", loadMs},
+            {"build_ms", buildMs},
+            {"trace_ms", bestMs},
+            {"trace_ms_median", medianMs},
+            {"frames", out.frameMs.size()},
+            {"rays", {{"primary", out.rays.primary},
+                      {"shadow", out.rays.shadow},
+                      {"secondary", out.rays.secondary}}},
+            {"mrays_per_s", mraysPerSecond}};
+        std::printf("%s\n", stats.dump().c_str());
+    }
+}
+
+} // namespace prism

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Prism builds and tests with; does nothing when all are there.
+set -euo pipefail
+packages=(
+    build-essential cmake pkg-config
+    libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
+    libglfw3-dev libglm-dev libtinyobjloader-dev libopenimageio-dev openimageio-tools
+    libgtest-dev libcli11-dev nlohmann-json3-dev libimgui-dev xvfb
+)
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "install-deps: all packages present"
+    exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -q
+$sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
