@@ -68,9 +68,9 @@ vec3 textureColor(uint textureIndex, vec2 uv) {
     vec2 xy = vec2(uv.x * float(w), uv.y * float(h)) - 0.5;
     vec2 base = floor(xy);
     vec2 f = xy - base;
-    int x0 = int(base.x) % w, y0 = int(base.y) % h;
-    x0 = x0 < 0 ? x0 + w : x0;
-    y0 = y0 < 0 ? y0 + h : y0;
+    // Floor-modulo in float: int() of a huge coordinate would be undefined.
+    int x0 = clamp(int(base.x - float(w) * floor(base.x / float(w))), 0, w - 1);
+    int y0 = clamp(int(base.y - float(h) * floor(base.y / float(h))), 0, h - 1);
     int x1 = (x0 + 1) % w, y1 = (y0 + 1) % h;
     // Bottom-based rows map to stored rows h-1-y.
     uint rowA = uint(h - 1 - y0) * uint(w), rowB = uint(h - 1 - y1) * uint(w);

@@ -67,17 +67,24 @@ vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color,
                     float phi = 2.0 * kPi * sample01(pixelIndex, sampleIndex, dim + 1u);
                     target += light.positionRadius.w * vec3(rxy * cos(phi), rxy * sin(phi), z);
                 }
-                vec3 origin = offsetOrigin(s.position, facingGeometric, target - s.position);
-                vec3 toTarget = target - origin;
-                float distance = length(toTarget);
-                gShadowRays += 1u;
-                visible = !traceOccluded(origin, toTarget / distance, distance);
+                // A target below the surface's own horizon (an area-light sample, or a point
+                // light seen through an interpolated normal) is shadowed by the surface itself.
+                visible = dot(target - s.position, facingGeometric) > 0.0;
+                if (visible) {
+                    vec3 origin = offsetOrigin(s.position, facingGeometric, target - s.position);
+                    vec3 toTarget = target - origin;
+                    float distance = length(toTarget);
+                    gShadowRays += 1u;
+                    visible = !traceOccluded(origin, toTarget / distance, distance);
+                }
             }
             if (visible) {
                 vec3 halfway = normalize(toLight + view);
+                // pow(0, 0) is undefined in GLSL; shininess 0 means a constant 1, as in C++.
+                float specular = m.lighting.z > 0.0 ? pow(max(0.0, dot(n, halfway)), m.lighting.z)
+                                                    : 1.0;
                 result += light.color.rgb *
-                          (m.lighting.x * color * nDotL +
-                           m.lighting.y * pow(max(0.0, dot(n, halfway)), m.lighting.z));
+                          (m.lighting.x * color * nDotL + m.lighting.y * specular);
             }
         }
         loopSync();
@@ -141,7 +148,7 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
                     } else {
                         float f0 = (ior - 1.0) / (ior + 1.0);
                         f0 *= f0;
-                        float fresnel = f0 + (1.0 - f0) * pow(1.0 - cosI, 5.0); // Schlick
+                        float fresnel = f0 + (1.0 - f0) * pow(max(0.0, 1.0 - cosI), 5.0); // Schlick
                         vec3 refracted = normalize(eta * ray.dir + (eta * cosI - sqrt(k)) * n);
                         pushRay(offsetOrigin(s.position, ng, reflected), reflected,
                                 weight * fresnel, ray.depth + 1u);

@@ -43,13 +43,12 @@ void validate(const Scene &scene, const RenderSettings &settings) {
             continue;
         if (m.texture < 0 || size_t(m.texture) >= scene.textures.size())
             throw Error("reference renderer: material '" + m.name + "' uses texture " +
-                        std::to_string(m.texture) + " of " +
-                        std::to_string(scene.textures.size()));
+                        std::to_string(m.texture) + " of " + std::to_string(scene.textures.size()));
         const Texture &t = scene.textures[size_t(m.texture)];
         if (t.width <= 0 || t.height <= 0 || t.texels.size() != size_t(t.width) * size_t(t.height))
             throw Error("reference renderer: texture '" + t.path + "' has " +
-                        std::to_string(t.texels.size()) + " texels for " +
-                        std::to_string(t.width) + "x" + std::to_string(t.height));
+                        std::to_string(t.texels.size()) + " texels for " + std::to_string(t.width) +
+                        "x" + std::to_string(t.height));
     }
 }
 
@@ -68,8 +67,8 @@ void writeAov(const Scene &scene, const CameraFrame &frame, int px, int py, floa
     normal = glm::vec3(glm::dot(ng, ray.dir) > 0.0 ? -ng : ng);
 }
 
-void renderRow(const Scene &scene, const RenderSettings &settings, const CameraFrame &frame,
-               int py, RenderedImage &image, RayCounts &rays) {
+void renderRow(const Scene &scene, const RenderSettings &settings, const CameraFrame &frame, int py,
+               RenderedImage &image, RayCounts &rays) {
     for (int px = 0; px < settings.width; ++px) {
         size_t pixel = size_t(py) * size_t(settings.width) + size_t(px);
         glm::dvec3 sum(0.0);

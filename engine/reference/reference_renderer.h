@@ -22,9 +22,9 @@ struct RenderSettings {
 
 struct RenderedImage {
     int width = 0, height = 0;
-    std::vector<glm::vec4> rgba;     // linear radiance, mean over the samples, alpha 1
-    std::vector<float> depth;        // distance along the pixel-centre ray; +infinity on a miss
-    std::vector<glm::vec3> normal;   // unit geometric normal facing that ray; 0 on a miss
+    std::vector<glm::vec4> rgba;   // linear radiance, mean over the samples, alpha 1
+    std::vector<float> depth;      // distance along the pixel-centre ray; +infinity on a miss
+    std::vector<glm::vec3> normal; // unit geometric normal facing that ray; 0 on a miss
     RayCounts rays;
 };
 
@@ -37,7 +37,6 @@ RenderedImage renderReference(const Scene &scene, const RenderSettings &settings
 // Radiance of one sample of pixel (px, py): the primary ray through pixelSamplePosition,
 // traced up to maxDepth. Adds the rays it traces (1 primary, shadow, secondary) to `rays`.
 glm::dvec3 tracePixelSample(const Scene &scene, const CameraFrame &frame, int px, int py,
-                            uint32_t sampleIndex, uint32_t spp, uint32_t maxDepth,
-                            RayCounts &rays);
+                            uint32_t sampleIndex, uint32_t spp, uint32_t maxDepth, RayCounts &rays);
 
 } // namespace prism

@@ -5,7 +5,9 @@
 namespace prism::reference {
 namespace {
 
-glm::dvec3 vertex(const Triangle &tri, int i) { return glm::dvec3(tri.p[i]); }
+glm::dvec3 vertex(const Triangle &tri, int i) {
+    return glm::dvec3(tri.p[i]);
+}
 
 } // namespace
 
@@ -35,8 +37,8 @@ bool traceClosest(const Scene &scene, const Ray &ray, double tMax, Hit &hit) {
         glm::dvec2 b12;
         for (uint32_t i = 0; i < scene.triangles.size(); ++i) {
             const Triangle &tri = scene.triangles[i];
-            if (intersectTriangle(ray, wray, vertex(tri, 0), vertex(tri, 1), vertex(tri, 2),
-                                  hit.t, t, b12)) {
+            if (intersectTriangle(ray, wray, vertex(tri, 0), vertex(tri, 1), vertex(tri, 2), hit.t,
+                                  t, b12)) {
                 hit.t = t;
                 hit.kind = HitKind::Triangle;
                 hit.index = i;

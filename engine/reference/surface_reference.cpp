@@ -72,9 +72,9 @@ Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit) {
 
 glm::dvec2 planeUV(glm::dvec3 p, glm::dvec3 n) {
     glm::dvec3 a = glm::abs(n);
-    glm::dvec3 axis = (a.x <= a.y && a.x <= a.z) ? glm::dvec3(1, 0, 0)
-                                                 : (a.y <= a.z ? glm::dvec3(0, 1, 0)
-                                                               : glm::dvec3(0, 0, 1));
+    glm::dvec3 axis = (a.x <= a.y && a.x <= a.z)
+                          ? glm::dvec3(1, 0, 0)
+                          : (a.y <= a.z ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1));
     glm::dvec3 a1 = glm::normalize(glm::cross(n, axis));
     glm::dvec3 a2 = glm::cross(n, a1);
     return glm::dvec2(glm::dot(p, a1), glm::dot(p, a2));
@@ -82,8 +82,8 @@ glm::dvec2 planeUV(glm::dvec3 p, glm::dvec3 n) {
 
 glm::dvec3 textureColor(const Texture &texture, glm::dvec2 uv) {
     int w = texture.width, h = texture.height;
-    if (w <= 0 || h <= 0 || texture.texels.size() < size_t(w) * size_t(h) ||
-        !std::isfinite(uv.x) || !std::isfinite(uv.y))
+    if (w <= 0 || h <= 0 || texture.texels.size() < size_t(w) * size_t(h) || !std::isfinite(uv.x) ||
+        !std::isfinite(uv.y))
         return glm::dvec3(0.0); // nothing sensible to look up
     // Texel centres sit at half-integers; bilinear weights from the fractional part.
     glm::dvec2 xy = glm::dvec2(uv.x * double(w), uv.y * double(h)) - 0.5;

@@ -54,11 +54,14 @@ glm::dvec3 directLight(const Scene &scene, const Surface &s, glm::dvec3 facingGe
         glm::dvec3 target = center;
         if (light.radius > 0.0f) {
             uint32_t dim = PRISM_DIM_LIGHT_BASE + 2u * ((depth - 1u) * lightCount + l);
-            target += double(light.radius) *
-                      uniformSpherePoint(gpu::sample01(sample.pixelIndex, sample.sampleIndex, dim),
-                                         gpu::sample01(sample.pixelIndex, sample.sampleIndex,
-                                                       dim + 1u));
+            target +=
+                double(light.radius) *
+                uniformSpherePoint(gpu::sample01(sample.pixelIndex, sample.sampleIndex, dim),
+                                   gpu::sample01(sample.pixelIndex, sample.sampleIndex, dim + 1u));
         }
+        // A target below the surface's own horizon is shadowed by the surface itself.
+        if (!(glm::dot(target - s.position, facingGeometric) > 0.0))
+            continue;
         glm::dvec3 origin = offsetOrigin(s.position, facingGeometric, target - s.position);
         glm::dvec3 toTarget = target - origin;
         double distance = glm::length(toTarget);
@@ -73,8 +76,8 @@ glm::dvec3 directLight(const Scene &scene, const Surface &s, glm::dvec3 facingGe
     return result;
 }
 
-glm::dvec3 traceRadiance(const Scene &scene, const Ray &primary, SampleId sample,
-                         uint32_t maxDepth, RayCounts &rays) {
+glm::dvec3 traceRadiance(const Scene &scene, const Ray &primary, SampleId sample, uint32_t maxDepth,
+                         RayCounts &rays) {
     // Explicit stack, popped last-in first-out like the shader's, so the terms are added in the
     // same order. It never holds more than 2 * maxDepth - 1 rays.
     std::vector<PendingRay> stack;
@@ -96,8 +99,8 @@ glm::dvec3 traceRadiance(const Scene &scene, const Ray &primary, SampleId sample
         const Material &m = scene.materials[s.material];
         glm::dvec3 view = -ray.dir;
         // Both normals turned to face the viewer.
-        glm::dvec3 ng = glm::dot(s.geometricNormal, view) < 0.0 ? -s.geometricNormal
-                                                                : s.geometricNormal;
+        glm::dvec3 ng =
+            glm::dot(s.geometricNormal, view) < 0.0 ? -s.geometricNormal : s.geometricNormal;
         glm::dvec3 n = glm::dot(s.shadingNormal, view) < 0.0 ? -s.shadingNormal : s.shadingNormal;
         glm::dvec3 color = surfaceColor(scene, m, s.uv);
         radiance += pending.weight *

@@ -27,7 +27,7 @@ glm::dvec3 directLight(const Scene &scene, const Surface &s, glm::dvec3 facingGe
 
 // Radiance along a primary ray (depth 1) with rays up to maxDepth. Counts shadow and secondary
 // rays (not the primary one).
-glm::dvec3 traceRadiance(const Scene &scene, const Ray &primary, SampleId sample,
-                         uint32_t maxDepth, RayCounts &rays);
+glm::dvec3 traceRadiance(const Scene &scene, const Ray &primary, SampleId sample, uint32_t maxDepth,
+                         RayCounts &rays);
 
 } // namespace prism::reference

@@ -51,6 +51,8 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
                      uint32_t height, const TracerOptions &options)
     : context_(context), width_(width), height_(height), features_(featuresOf(scene)),
       runner_(context) {
+    if (options.maxDepth < 1 || options.maxDepth > 64)
+        throw Error("ray depth " + std::to_string(options.maxDepth) + " is outside 1..64");
     features_.maxDepth = options.maxDepth;
     features_.writeAov = options.writeAov;
     features_.shadows = options.shadows;

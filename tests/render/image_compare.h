@@ -18,13 +18,16 @@ struct ImageDifference {
     double differingFraction() const { return pixels ? double(differing) / double(pixels) : 0.0; }
 };
 
-// `a` is RGBA floats; `b` is RGBA floats too. Alpha is ignored.
+// `a` and `b` are RGBA floats; alpha is ignored. Pixels where `skip` is true are not compared.
 inline ImageDifference compareImages(const std::vector<float> &a, const std::vector<float> &b,
-                                     double threshold) {
+                                     double threshold, const std::vector<bool> &skip = {}) {
     ImageDifference d;
-    d.pixels = std::min(a.size(), b.size()) / 4;
+    size_t count = std::min(a.size(), b.size()) / 4;
     double sum = 0.0;
-    for (size_t p = 0; p < d.pixels; ++p) {
+    for (size_t p = 0; p < count; ++p) {
+        if (!skip.empty() && skip[p])
+            continue;
+        d.pixels++;
         double worst = 0.0;
         for (int c = 0; c < 3; ++c) {
             double x = a[p * 4 + c], y = b[p * 4 + c];
@@ -42,6 +45,36 @@ inline ImageDifference compareImages(const std::vector<float> &a, const std::vec
     }
     d.meanAbsolute = d.pixels ? sum / double(d.pixels * 3) : 0.0;
     return d;
+}
+
+// Pixels within `radius` of a place where the image changes by more than `contrast` between
+// neighbours: silhouettes and shadow edges, where a sub-pixel shift of geometry legitimately
+// changes a pixel. Flat regions (where acne and lost shadows would show) stay unmasked.
+inline std::vector<bool> edgeBand(const std::vector<float> &rgba, int width, int height,
+                                  int radius, float contrast) {
+    auto at = [&](int x, int y, int c) { return rgba[(size_t(y) * width + x) * 4 + c]; };
+    std::vector<bool> edge(size_t(width) * height, false);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                if (x + 1 < width && std::abs(at(x, y, c) - at(x + 1, y, c)) > contrast)
+                    edge[size_t(y) * width + x] = edge[size_t(y) * width + x + 1] = true;
+                if (y + 1 < height && std::abs(at(x, y, c) - at(x, y + 1, c)) > contrast)
+                    edge[size_t(y) * width + x] = edge[size_t(y + 1) * width + x] = true;
+            }
+    std::vector<bool> band(edge.size(), false);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            if (!edge[size_t(y) * width + x])
+                continue;
+            for (int dy = -radius; dy <= radius; ++dy)
+                for (int dx = -radius; dx <= radius; ++dx) {
+                    int nx = x + dx, ny = y + dy;
+                    if (nx >= 0 && ny >= 0 && nx < width && ny < height)
+                        band[size_t(ny) * width + nx] = true;
+                }
+        }
+    return band;
 }
 
 inline std::string describe(const ImageDifference &d) {

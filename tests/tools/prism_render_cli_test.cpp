@@ -16,16 +16,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
+struct CliResult {
     int exitCode;
     std::string out; // stdout and stderr together
     std::string stdoutOnly;
 };
 
-Run run(const std::string &args) {
+CliResult run(const std::string &args) {
     fs::path errFile = fs::temp_directory_path() / ("prism-cli-" + std::to_string(::getpid()));
     std::string command = std::string(PRISM_RENDER_EXE) + " " + args + " 2>" + errFile.string();
-    Run result{};
+    CliResult result{};
     FILE *pipe = ::popen(command.c_str(), "r");
     std::array<char, 4096> buffer;
     size_t n;
@@ -60,7 +60,7 @@ protected:
 };
 
 TEST_F(PrismRenderCli, HelpListsEveryOption) {
-    Run r = run("--help");
+    CliResult r = run("--help");
     EXPECT_EQ(r.exitCode, 0);
     for (const char *option : {"--size", "--spp", "--depth", "--grid", "--aov", "--backend",
                                "--repeat", "--stats", "--quiet"})
@@ -69,7 +69,7 @@ TEST_F(PrismRenderCli, HelpListsEveryOption) {
 
 TEST_F(PrismRenderCli, SceneErrorNamesFileAndLineAndWritesNothing) {
     fs::path scene = write("bad.scene", "# fine\nsphere 0 0 0 1\nsphere 0 0 0 -1\n");
-    Run r = run(scene.string() + " -o " + (dir_ / "out.png").string() + " --size 8x8");
+    CliResult r = run(scene.string() + " -o " + (dir_ / "out.png").string() + " --size 8x8");
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.out.find(scene.string() + ":3:"), std::string::npos) << r.out;
     EXPECT_EQ(filesInDir(), 1u) << "only the scene itself: no image, no temporary file";
@@ -80,14 +80,14 @@ TEST_F(PrismRenderCli, BadOptionsFailClearly) {
     std::string base = scene.string() + " -o " + (dir_ / "out.png").string();
     for (const char *bad : {" --size 8by8", " --grid 0", " --grid 2x2", " --spp 0",
                             " --backend metal", " --aov depth"}) {
-        Run r = run(base + bad);
+        CliResult r = run(base + bad);
         EXPECT_NE(r.exitCode, 0) << bad;
         EXPECT_FALSE(r.out.empty()) << bad;
     }
-    Run wrongExt = run(scene.string() + " -o " + (dir_ / "out.jpg").string());
+    CliResult wrongExt = run(scene.string() + " -o " + (dir_ / "out.jpg").string());
     EXPECT_NE(wrongExt.exitCode, 0);
     EXPECT_NE(wrongExt.out.find(".exr"), std::string::npos);
-    Run missing = run((dir_ / "nope.scene").string() + " -o " + (dir_ / "x.png").string());
+    CliResult missing = run((dir_ / "nope.scene").string() + " -o " + (dir_ / "x.png").string());
     EXPECT_NE(missing.exitCode, 0);
     EXPECT_NE(missing.out.find("nope.scene"), std::string::npos);
     EXPECT_EQ(filesInDir(), 1u);
@@ -97,7 +97,7 @@ TEST_F(PrismRenderCli, StatsLineAndExrWithAovsAndMetadata) {
     fs::path scene = write("ok.scene", "camera eye 0 0 5 look 0 0 0\nlight 2 2 5\n"
                                        "sphere 0 0 0 1\nplane 0 -1 0 0 1 0\n");
     fs::path out = dir_ / "out.exr";
-    Run r = run(scene.string() + " -o " + out.string() +
+    CliResult r = run(scene.string() + " -o " + out.string() +
                 " --size 24x16 --spp 2 --repeat 3 --aov z,normal --stats --validation");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     nlohmann::json stats = nlohmann::json::parse(r.stdoutOnly);
@@ -125,7 +125,7 @@ TEST_F(PrismRenderCli, StatsLineAndExrWithAovsAndMetadata) {
 TEST_F(PrismRenderCli, CpuBackendWritesPng) {
     fs::path scene = write("ok.scene", "light 2 2 5\nsphere 0 0 0 1\n");
     fs::path out = dir_ / "out.png";
-    Run r = run(scene.string() + " -o " + out.string() + " --size 16x12 --backend cpu --quiet");
+    CliResult r = run(scene.string() + " -o " + out.string() + " --size 16x12 --backend cpu --quiet");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     prism::LoadedImage image = prism::readImage(out);
     EXPECT_EQ(image.channels, 3);

@@ -69,6 +69,12 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
                    "Grid resolution: auto (sized to the scene), off (test every primitive), N "
                    "(N^3 cells) or NxNyNz")
         ->default_val("auto");
+    float density = GridOptions{}.density;
+    app.add_option("--grid-density", density,
+                   "With --grid auto: target cells per primitive (lambda; see "
+                   "docs/grid-density.md)")
+        ->check(CLI::Range(0.01f, 1000.0f))
+        ->default_val(density);
     app.add_option("--aov", aov, "Extra EXR channels: z (distance, Z), normal (N.X N.Y N.Z)");
     app.add_option("--backend", backend, "vulkan (GPU or lavapipe) or cpu (double-precision "
                                          "reference)")
@@ -94,6 +100,7 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
     options.outputPath = output;
     parseSize(size, options.width, options.height);
     options.grid = parseGridOption(options.gridText);
+    options.grid.density = density;
     if (!aov.empty())
         parseAovs(aov, options);
     options.backend = backend == "cpu" ? Backend::Cpu : Backend::Vulkan;
