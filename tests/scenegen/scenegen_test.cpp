@@ -55,8 +55,8 @@ struct RunResult {
 // Runs prism-scenegen with `args` (already shell-quoted where needed).
 RunResult runScenegen(const std::string &args, const TempDir &dir) {
     std::filesystem::path log = dir.path() / "output.log";
-    std::string command = std::string("'") + PRISM_SCENEGEN_EXE + "' " + args + " > '" +
-                          log.string() + "' 2>&1";
+    std::string command =
+        std::string("'") + PRISM_SCENEGEN_EXE + "' " + args + " > '" + log.string() + "' 2>&1";
     int status = std::system(command.c_str());
     RunResult result;
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -80,9 +80,9 @@ struct ExpectedCounts {
 // 1057, 4968, 5436) plus the showcase and the Cornell box. Only teapot differs from the
 // original's count: the shipped teapot model is finer (assets/scenes/README.md).
 const ExpectedCounts kExpected[] = {
-    {"scene", 19, 2, 600, 1},     {"grid", 1000, 1, 0, 1},    {"rand50", 50, 3, 0, 1},
-    {"rand500", 500, 3, 0, 1},    {"rand5000", 5000, 3, 0, 1}, {"teapot", 0, 1, 6320, 1},
-    {"bunny", 0, 0, 4968, 1},     {"objects", 0, 0, 5436, 1}, {"showcase", 4, 1, 12176, 3},
+    {"scene", 19, 2, 600, 1},  {"grid", 1000, 1, 0, 1},     {"rand50", 50, 3, 0, 1},
+    {"rand500", 500, 3, 0, 1}, {"rand5000", 5000, 3, 0, 1}, {"teapot", 0, 1, 6320, 1},
+    {"bunny", 0, 0, 4968, 1},  {"objects", 0, 0, 5436, 1},  {"showcase", 4, 1, 12176, 3},
     {"cornell", 2, 0, 36, 1},
 };
 
@@ -123,7 +123,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ShippedSceneCounts, testing::ValuesIn(kExpected
 
 TEST(ShippedScenes, SeedScenePrimitiveTotalsAreTheOriginals) {
     const std::pair<const char *, size_t> totals[] = {
-        {"scene", 621},  {"grid", 1001},    {"rand50", 53},  {"rand500", 503},
+        {"scene", 621},     {"grid", 1001},  {"rand50", 53},   {"rand500", 503},
         {"rand5000", 5003}, {"bunny", 4968}, {"objects", 5436}};
     for (const auto &[name, total] : totals) {
         Scene scene = loadScene(kScenes / (std::string(name) + ".scene"));
@@ -211,19 +211,19 @@ TEST(Scenegen, BadArgumentsFailWithoutWritingAnything) {
     TempDir dir;
     const std::string out = " -o '" + (dir.path() / "x.scene").string() + "'";
     const std::vector<std::string> bad = {
-        "",                                        // no subcommand
-        "teleport" + out,                          // unknown subcommand
-        "random --count 10",                       // no output
-        "random --count 0" + out,                  // too few spheres
-        "random --count ten" + out,                // not a number
-        "random --count 10 --seed -1" + out,       // negative seed
-        "random --count 10 --bogus 3" + out,       // unknown option
+        "",                                  // no subcommand
+        "teleport" + out,                    // unknown subcommand
+        "random --count 10",                 // no output
+        "random --count 0" + out,            // too few spheres
+        "random --count ten" + out,          // not a number
+        "random --count 10 --seed -1" + out, // negative seed
+        "random --count 10 --bogus 3" + out, // unknown option
         "random --min-radius 0.9 --max-radius 0.5" + out,
-        "random --max-radius 6" + out,             // does not fit the box of side 10
+        "random --max-radius 6" + out, // does not fit the box of side 10
         "random --box 0" + out,
         "random --materials 0" + out,
         "lattice --size 0" + out,
-        "lattice --radius 0.6 --spacing 1" + out,  // spheres would overlap
+        "lattice --radius 0.6 --spacing 1" + out, // spheres would overlap
         "random -o '" + (dir.path() / "no/such/dir/x.scene").string() + "'",
         "random -o '" + dir.path().string() + "'", // a directory
     };

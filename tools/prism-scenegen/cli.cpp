@@ -66,8 +66,9 @@ int runScenegen(int argc, char **argv) {
     randomCmd->add_option("--max-radius", random.maxRadius, "Largest sphere radius")
         ->check(CLI::PositiveNumber)
         ->default_val(random.maxRadius);
-    randomCmd->add_option("--materials", random.materials,
-                          "Size of the random material palette the spheres draw from")
+    randomCmd
+        ->add_option("--materials", random.materials,
+                     "Size of the random material palette the spheres draw from")
         ->check(CLI::Range(1u, 1000u))
         ->default_val(random.materials);
     addOutput(randomCmd);
@@ -93,8 +94,9 @@ int runScenegen(int argc, char **argv) {
     std::string bunnyPath = "../models/bunny/bunny_lowres.obj";
     CLI::App *objectsCmd = app.add_subcommand(
         "objects", "The bunny and other triangle objects, 5436 triangles (the original's objects)");
-    objectsCmd->add_option("--bunny", bunnyPath,
-                           "Bunny OBJ path as written in the scene (relative to the scene file)")
+    objectsCmd
+        ->add_option("--bunny", bunnyPath,
+                     "Bunny OBJ path as written in the scene (relative to the scene file)")
         ->default_val(bunnyPath);
     addOutput(objectsCmd);
 

@@ -17,12 +17,18 @@ inline glm::dvec3 hsvToRgb(double hueDegrees, double saturation, double value) {
     double q = value * (1.0 - saturation * f);
     double t = value * (1.0 - saturation * (1.0 - f));
     switch (sector) {
-    case 0: return {value, t, p};
-    case 1: return {q, value, p};
-    case 2: return {p, value, t};
-    case 3: return {p, q, value};
-    case 4: return {t, p, value};
-    default: return {value, p, q};
+    case 0:
+        return {value, t, p};
+    case 1:
+        return {q, value, p};
+    case 2:
+        return {p, value, t};
+    case 3:
+        return {p, q, value};
+    case 4:
+        return {t, p, value};
+    default:
+        return {value, p, q};
     }
 }
 

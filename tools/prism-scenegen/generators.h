@@ -11,7 +11,7 @@ namespace prism::scenegen {
 struct RandomOptions {
     uint32_t count = 50;
     uint64_t seed = 1;
-    double box = 10.0;      // side of the cube the spheres stay inside
+    double box = 10.0; // side of the cube the spheres stay inside
     double minRadius = 0.4;
     double maxRadius = 0.8;
     uint32_t materials = 16; // size of the random palette the spheres draw from
@@ -21,8 +21,8 @@ std::string randomCommand(const RandomOptions &options);
 
 // The original's "grid" scene: a regular n x n x n lattice of spheres above a floor.
 struct LatticeOptions {
-    uint32_t size = 10;     // spheres per side
-    double spacing = 1.0;   // between neighbouring centres
+    uint32_t size = 10;   // spheres per side
+    double spacing = 1.0; // between neighbouring centres
     double radius = 0.35;
 };
 std::string latticeScene(const LatticeOptions &options, const std::string &command);

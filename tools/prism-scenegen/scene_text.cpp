@@ -35,7 +35,9 @@ std::string formatTicks(int64_t ticks) {
     return text;
 }
 
-std::string formatNumber(double value) { return formatTicks(toTicks(value)); }
+std::string formatNumber(double value) {
+    return formatTicks(toTicks(value));
+}
 
 std::string formatVec(const glm::dvec3 &v) {
     return formatNumber(v.x) + " " + formatNumber(v.y) + " " + formatNumber(v.z);

@@ -22,8 +22,8 @@ void orientOutward(Solid &solid, const glm::dvec3 &centre) {
 } // namespace
 
 Solid tetrahedron(double edge) {
-    double base = edge / std::sqrt(3.0);          // circumradius of the base triangle
-    double height = edge * std::sqrt(2.0 / 3.0);  // apex above the base
+    double base = edge / std::sqrt(3.0);         // circumradius of the base triangle
+    double height = edge * std::sqrt(2.0 / 3.0); // apex above the base
     Solid s;
     for (int i = 0; i < 3; ++i) {
         double angle = 2.0 * std::numbers::pi * i / 3.0;
@@ -37,8 +37,8 @@ Solid tetrahedron(double edge) {
 
 Solid octahedron(double radius) {
     Solid s;
-    s.vertices = {{radius, 0, 0}, {-radius, 0, 0}, {0, radius, 0},
-                  {0, -radius, 0}, {0, 0, radius}, {0, 0, -radius}};
+    s.vertices = {{radius, 0, 0},  {-radius, 0, 0}, {0, radius, 0},
+                  {0, -radius, 0}, {0, 0, radius},  {0, 0, -radius}};
     for (int x : {0, 1})
         for (int y : {2, 3})
             for (int z : {4, 5})
@@ -66,12 +66,11 @@ Solid box(const glm::dvec3 &size) {
 Solid icosphere(double radius, int levels) {
     const double t = (1.0 + std::sqrt(5.0)) / 2.0;
     Solid s;
-    s.vertices = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    s.faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-               {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-               {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-               {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+    s.vertices = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+    s.faces = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+               {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+               {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
     for (glm::dvec3 &v : s.vertices)
         v = glm::normalize(v);
     for (int level = 0; level < levels; ++level) {
@@ -118,8 +117,7 @@ Solid torus(double majorRadius, double minorRadius, int majorSegments, int minor
     }
     for (int i = 0; i < majorSegments; ++i)
         for (int j = 0; j < minorSegments; ++j) {
-            int a = index(i, j), b = index(i + 1, j), c = index(i + 1, j + 1),
-                d = index(i, j + 1);
+            int a = index(i, j), b = index(i + 1, j), c = index(i + 1, j + 1), d = index(i, j + 1);
             s.faces.push_back({a, b, c});
             s.faces.push_back({a, c, d});
         }
