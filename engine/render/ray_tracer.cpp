@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/timer.h"
 #include "render/frame_params.h"
+#include "render/loop_bound.h"
 #include "shaders/trace.comp.spv.h"
 #include "vk/vk_check.h"
 
@@ -58,9 +59,14 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     features_.shadows = options.shadows;
     features_.reflection = features_.reflection && options.reflection;
     features_.transmission = features_.transmission && options.transmission;
-    features_.loopBudget = options.loopBudget >= 0 ? uint32_t(options.loopBudget)
-                           : context.isLavapipe() ? kLavapipeLoopBudget
-                                                  : 0u;
+    if (options.loopBudget >= 0)
+        features_.loopBudget = uint32_t(options.loopBudget);
+    else if (context.isLavapipe())
+        features_.loopBudget = invocationIterationBound(scene, grid, features_) < kLavapipeLoopBudget
+                                   ? 0u // provably within lavapipe's limit: no counting needed
+                                   : kLavapipeLoopBudget;
+    else
+        features_.loopBudget = 0u;
 
     PackedScene packed = packScene(scene, grid);
     sceneBuffers_.push_back(upload(&packed.header, sizeof(packed.header), "scene header"));

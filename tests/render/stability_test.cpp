@@ -7,6 +7,7 @@
 
 #include "gpu_fixture.h"
 #include "image_compare.h"
+#include "render/loop_bound.h"
 #include "render_helpers.h"
 #include "test_scenes.h"
 
@@ -208,6 +209,39 @@ TEST_F(Stability, LavapipeLoopCutIsAlwaysCaught) {
     }
     EXPECT_GT(checked.frame.overBudgetPixels, 0u);
     EXPECT_EQ(wrongAndUnreported, 0);
+}
+
+// The static bound (render/loop_bound.h) compiles the counting out only where the limit cannot
+// be reached. Near the limit (29,900 spheres tested by the primary and the shadow ray, ~59,900
+// iterations by the bound) the uncounted shader must still give every pixel right.
+TEST_F(Stability, UncountedShaderNearTheLimitIsStillExact) {
+    if (!context().isLavapipe())
+        GTEST_SKIP() << "only lavapipe limits shader loops";
+    Scene scene;
+    scene.materials.push_back(Material{"default"});
+    scene.camera.eye = {0.0f, 0.0f, 5.0f};
+    scene.lights.push_back(Light{{0.0f, 0.0f, 10.0f}, {1.0f, 1.0f, 1.0f}, 0.0f});
+    for (int i = 0; i < 29898; ++i)
+        scene.spheres.push_back(Sphere{{1000.0f + float(i), 1000.0f, 1000.0f}, 0.1f, 0});
+    scene.spheres.push_back(Sphere{{0.0f, 0.0f, 0.0f}, 1.5f, 0});
+    scene.spheres.push_back(Sphere{{0.5f, 0.0f, 7.0f}, 0.5f, 0});
+    Grid grid = buildGrid(scene, parseGridOption("off"));
+    TracerOptions options;
+    options.maxDepth = 1;
+    RayTracer tracer(context(), scene, grid, 32, 32, options);
+    TracerFeatures features = tracer.features();
+    ASSERT_LT(invocationIterationBound(scene, grid, features), 60000u);
+    ASSERT_GT(invocationIterationBound(scene, grid, features), 59000u);
+    EXPECT_EQ(features.loopBudget, 0u); // counting compiled out
+    tracer.renderFrame(scene.camera, 1);
+    TracedImage image = tracer.readback(1);
+    ImageDifference d = compareImages(image.rgba, renderCpu(scene, 32, 32, 1, 1), 0.02);
+    EXPECT_EQ(d.differing, 0u) << describe(d);
+
+    scene.spheres.insert(scene.spheres.begin(), 3000, scene.spheres.front());
+    Grid bigger = buildGrid(scene, parseGridOption("off"));
+    RayTracer counted(context(), scene, bigger, 32, 32, options);
+    EXPECT_EQ(counted.features().loopBudget, 60000u); // over the bound: counting stays
 }
 
 } // namespace
