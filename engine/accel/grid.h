@@ -21,7 +21,7 @@ struct GridOptions {
     Mode mode = Mode::Auto;
     glm::ivec3 resolution{1}; // Fixed only
     // Auto only: target cells per primitive (lambda). Measured, see docs/grid-density.md.
-    float density = 2.0f;
+    float density = 4.0f;
 };
 
 // Parses --grid's argument: "auto", "off", "N" (N^3) or "NxNyNz", each count in 1..1024.

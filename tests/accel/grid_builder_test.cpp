@@ -77,7 +77,8 @@ TEST(GridBuilder, AutoResolutionGrowsWithThePrimitiveCount) {
     Grid small = buildGrid(test::randomSpheresAndTriangles(3, 20, 0));
     Grid large = buildGrid(test::randomSpheresAndTriangles(3, 2000, 0));
     EXPECT_LT(small.cellCount() * 20, large.cellCount());
-    EXPECT_NEAR(double(large.cellCount()), 2.0 * 2000, 0.3 * 2.0 * 2000);
+    double target = GridOptions{}.density * 2000;
+    EXPECT_NEAR(double(large.cellCount()), target, 0.3 * target);
 }
 
 // A long, thin diagonal triangle: its bounding box covers a 10x10 slab of cells, but it only

@@ -1,0 +1,74 @@
+#include "bench_study.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+
+#include "core/timer.h"
+#include "render/ray_tracer.h"
+#include "scene/scene_loader.h"
+
+namespace prism {
+
+double BenchResult::medianMs() const {
+    if (frameMs.empty())
+        return 0.0;
+    std::vector<double> sorted = frameMs;
+    std::sort(sorted.begin(), sorted.end());
+    size_t n = sorted.size();
+    return n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+}
+
+double BenchResult::mraysPerSecond() const {
+    double ms = medianMs();
+    return ms > 0.0 ? double(rays.total()) / (ms * 1000.0) : 0.0;
+}
+
+std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::string> &scenes,
+                                  const std::vector<BenchVariant> &variants,
+                                  const BenchSettings &settings,
+                                  const std::function<void(const std::string &)> &progress) {
+    std::vector<BenchResult> all;
+    for (const std::string &path : scenes) {
+        Scene scene = loadScene(path);
+        std::string name = std::filesystem::path(path).stem().string();
+        std::vector<BenchResult> results;
+        std::vector<std::unique_ptr<RayTracer>> tracers;
+        for (const BenchVariant &variant : variants) {
+            progress(name + " " + variant.name + ": build + warm-up");
+            BenchResult r;
+            r.scene = name;
+            r.variant = variant.name;
+            r.primitives = scene.finitePrimitiveCount() + scene.planes.size();
+            Timer build;
+            Grid grid = buildGrid(scene, variant.grid);
+            r.buildMs = build.elapsedMs();
+            r.grid = variant.grid.mode == GridOptions::Mode::Off
+                         ? "off"
+                         : std::to_string(grid.resolution.x) + "x" +
+                               std::to_string(grid.resolution.y) + "x" +
+                               std::to_string(grid.resolution.z);
+            r.maxPerCell = grid.maxPerCell;
+            TracerOptions options = variant.tracer;
+            options.maxDepth = settings.maxDepth;
+            auto tracer = std::make_unique<RayTracer>(context, scene, grid, settings.width,
+                                                      settings.height, options);
+            r.loopCounting = tracer->features().loopBudget != 0;
+            FrameResult warm = tracer->renderFrame(scene.camera, settings.samplesPerPixel);
+            r.rays = warm.rays;
+            results.push_back(r);
+            tracers.push_back(std::move(tracer));
+        }
+        for (uint32_t run = 0; run < settings.runs; ++run)
+            for (size_t v = 0; v < variants.size(); ++v) {
+                progress(name + " " + variants[v].name + ": frame " + std::to_string(run + 1) +
+                         "/" + std::to_string(settings.runs));
+                FrameResult f = tracers[v]->renderFrame(scene.camera, settings.samplesPerPixel);
+                results[v].frameMs.push_back(f.gpuMs);
+            }
+        all.insert(all.end(), results.begin(), results.end());
+    }
+    return all;
+}
+
+} // namespace prism

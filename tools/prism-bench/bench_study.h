@@ -1,0 +1,40 @@
+#pragma once
+// Runs every variant of every scene, interleaved: each round renders one frame of each variant
+// in turn, so slow drift of a shared machine affects all variants alike and their ratios hold.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "bench_variant.h"
+#include "core/ray_counts.h"
+#include "vk/context.h"
+
+namespace prism {
+
+struct BenchSettings {
+    uint32_t width = 1024, height = 768;
+    uint32_t samplesPerPixel = 1;
+    uint32_t maxDepth = 5;
+    uint32_t runs = 5; // timed frames per variant, after one warm-up frame
+};
+
+struct BenchResult {
+    std::string scene, variant;
+    uint64_t primitives = 0;
+    std::string grid;
+    uint32_t maxPerCell = 0;
+    bool loopCounting = false;
+    double buildMs = 0.0;
+    std::vector<double> frameMs; // GPU time of each timed frame
+    RayCounts rays;              // of one frame
+    double medianMs() const;
+    double mraysPerSecond() const; // at the median
+};
+
+std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::string> &scenes,
+                                  const std::vector<BenchVariant> &variants,
+                                  const BenchSettings &settings,
+                                  const std::function<void(const std::string &)> &progress);
+
+} // namespace prism

@@ -1,0 +1,21 @@
+#pragma once
+// One configuration of the tracer that a benchmark compares with others on the same scene:
+// a grid choice and switched-off features, written as e.g. "grid=20", "density=4",
+// "off", "no-shadows" or combinations joined by '+' ("grid=30+no-reflection").
+#include <string>
+
+#include "accel/grid.h"
+#include "render/ray_tracer.h"
+
+namespace prism {
+
+struct BenchVariant {
+    std::string name;
+    GridOptions grid;
+    TracerOptions tracer;
+};
+
+// Throws prism::Error naming the bad token.
+BenchVariant parseBenchVariant(const std::string &text);
+
+} // namespace prism

@@ -1,0 +1,135 @@
+// prism-bench: times scenes under tracer variants (grid choices, features off) on one Vulkan
+// device and prints a Markdown table: median GPU ms over several interleaved frames, Mrays/s,
+// and each variant's time relative to the first variant of its scene.
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "bench_study.h"
+#include "core/error.h"
+
+using namespace prism;
+
+namespace {
+
+std::vector<std::string> splitList(const std::string &text) {
+    std::vector<std::string> parts;
+    std::stringstream in(text);
+    std::string part;
+    while (std::getline(in, part, ','))
+        if (!part.empty())
+            parts.push_back(part);
+    return parts;
+}
+
+void printTable(const std::vector<BenchResult> &results, const BenchSettings &s,
+                const std::string &device) {
+    std::printf("Device: %s; %ux%u, %u spp, depth %u; median of %u frames after a warm-up.\n\n",
+                device.c_str(), s.width, s.height, s.samplesPerPixel, s.maxDepth, s.runs);
+    std::printf("| scene | variant | primitives | grid | max/cell | build ms | trace ms (median) "
+                "| Mrays/s | rays | vs first |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    double first = 0.0;
+    std::string scene;
+    for (const BenchResult &r : results) {
+        if (r.scene != scene) {
+            scene = r.scene;
+            first = r.medianMs();
+        }
+        std::printf("| %s | %s%s | %llu | %s | %u | %.1f | %.1f | %.2f | %llu | %.2f |\n",
+                    r.scene.c_str(), r.variant.c_str(), r.loopCounting ? " (counted)" : "",
+                    (unsigned long long)r.primitives, r.grid.c_str(), r.maxPerCell, r.buildMs,
+                    r.medianMs(), r.mraysPerSecond(), (unsigned long long)r.rays.total(),
+                    first > 0.0 ? r.medianMs() / first : 0.0);
+    }
+}
+
+nlohmann::json toJson(const BenchResult &r) {
+    return {{"scene", r.scene},
+            {"variant", r.variant},
+            {"primitives", r.primitives},
+            {"grid", r.grid},
+            {"max_per_cell", r.maxPerCell},
+            {"loop_counting", r.loopCounting},
+            {"build_ms", r.buildMs},
+            {"frame_ms", r.frameMs},
+            {"trace_ms_median", r.medianMs()},
+            {"mrays_per_s", r.mraysPerSecond()},
+            {"rays",
+             {{"primary", r.rays.primary}, {"shadow", r.rays.shadow},
+              {"secondary", r.rays.secondary}}}};
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+    CLI::App app{"prism-bench: times scenes under tracer variants, interleaving frames so that "
+                 "ratios between variants hold on a noisy machine."};
+    std::vector<std::string> scenes;
+    std::string size = "1024x768", variantList = "auto", jsonPath, deviceFilter;
+    BenchSettings settings;
+    app.add_option("SCENES", scenes, "Scene files")->required()->check(CLI::ExistingFile);
+    app.add_option("--size", size, "Image size WxH")->default_val(size);
+    app.add_option("--spp", settings.samplesPerPixel, "Samples per pixel")
+        ->check(CLI::Range(1u, 4096u))
+        ->default_val(1);
+    app.add_option("--depth", settings.maxDepth, "Maximum ray depth")
+        ->check(CLI::Range(1u, 16u))
+        ->default_val(5);
+    app.add_option("--runs", settings.runs, "Timed frames per variant")
+        ->check(CLI::Range(1u, 1000u))
+        ->default_val(5);
+    app.add_option("--variants", variantList,
+                   "Comma-separated variants: auto, off, grid=N|NxNyNz, density=L, "
+                   "no-reflection, no-refraction, no-shadows, count-loops; join parts with +")
+        ->default_val(variantList);
+    app.add_option("--json", jsonPath, "Also write every result (all frame times) as JSON");
+    app.add_option("--device", deviceFilter, "First Vulkan device whose name contains this");
+    CLI11_PARSE(app, argc, argv);
+    try {
+        unsigned w = 0, h = 0;
+        char x = 0;
+        std::istringstream in(size);
+        if (!(in >> w >> x >> h) || x != 'x' || w == 0 || h == 0 || !in.eof())
+            throw Error("--size " + size + ": expected WxH, e.g. 1024x768");
+        settings.width = w;
+        settings.height = h;
+        std::vector<BenchVariant> variants;
+        for (const std::string &v : splitList(variantList))
+            variants.push_back(parseBenchVariant(v));
+        if (variants.empty())
+            throw Error("--variants: no variant given");
+        vk::ContextOptions contextOptions;
+        contextOptions.deviceNameFilter = deviceFilter;
+        vk::Context context(contextOptions);
+        std::vector<BenchResult> results =
+            runStudy(context, scenes, variants, settings, [](const std::string &what) {
+                std::fprintf(stderr, "\rprism-bench: %-60s", what.c_str());
+                std::fflush(stderr);
+            });
+        std::fprintf(stderr, "\n");
+        printTable(results, settings, context.deviceName());
+        if (!jsonPath.empty()) {
+            nlohmann::json all = nlohmann::json::array();
+            for (const BenchResult &r : results)
+                all.push_back(toJson(r));
+            std::string tmp = jsonPath + ".tmp";
+            std::ofstream(tmp) << nlohmann::json{{"device", context.deviceName()},
+                                                 {"width", settings.width},
+                                                 {"height", settings.height},
+                                                 {"spp", settings.samplesPerPixel},
+                                                 {"depth", settings.maxDepth},
+                                                 {"results", all}}
+                                      .dump(1)
+                               << "\n";
+            std::rename(tmp.c_str(), jsonPath.c_str());
+        }
+    } catch (const std::exception &e) {
+        std::fprintf(stderr, "prism-bench: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
