@@ -10,33 +10,17 @@
 #include <nlohmann/json.hpp>
 #include <sys/wait.h>
 
+#include "cli_runner.h"
 #include "io/image_reader.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CliResult {
-    int exitCode;
-    std::string out; // stdout and stderr together
-    std::string stdoutOnly;
-};
+using prism::test::CliResult;
 
 CliResult run(const std::string &args) {
-    fs::path errFile = fs::temp_directory_path() / ("prism-cli-" + std::to_string(::getpid()));
-    std::string command = std::string(PRISM_RENDER_EXE) + " " + args + " 2>" + errFile.string();
-    CliResult result{};
-    FILE *pipe = ::popen(command.c_str(), "r");
-    std::array<char, 4096> buffer;
-    size_t n;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-        result.stdoutOnly.append(buffer.data(), n);
-    int status = ::pclose(pipe);
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream err(errFile);
-    result.out = result.stdoutOnly + std::string(std::istreambuf_iterator<char>(err), {});
-    fs::remove(errFile);
-    return result;
+    return prism::test::runTool(PRISM_RENDER_EXE, args);
 }
 
 class PrismRenderCli : public ::testing::Test {
@@ -79,7 +63,7 @@ TEST_F(PrismRenderCli, BadOptionsFailClearly) {
     fs::path scene = write("ok.scene", "sphere 0 0 0 1\n");
     std::string base = scene.string() + " -o " + (dir_ / "out.png").string();
     for (const char *bad : {" --size 8by8", " --grid 0", " --grid 2x2", " --spp 0",
-                            " --backend metal", " --aov depth"}) {
+                            " --backend metal", " --aov depth", " --grid-density 0"}) {
         CliResult r = run(base + bad);
         EXPECT_NE(r.exitCode, 0) << bad;
         EXPECT_FALSE(r.out.empty()) << bad;
@@ -98,7 +82,7 @@ TEST_F(PrismRenderCli, StatsLineAndExrWithAovsAndMetadata) {
                                        "sphere 0 0 0 1\nplane 0 -1 0 0 1 0\n");
     fs::path out = dir_ / "out.exr";
     CliResult r = run(scene.string() + " -o " + out.string() +
-                " --size 24x16 --spp 2 --repeat 3 --aov z,normal --stats --validation");
+                      " --size 24x16 --spp 2 --repeat 3 --aov z,normal --stats --validation");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     nlohmann::json stats = nlohmann::json::parse(r.stdoutOnly);
     for (const char *key : {"build_ms", "trace_ms", "trace_ms_median", "mrays_per_s", "rays"})
@@ -125,7 +109,8 @@ TEST_F(PrismRenderCli, StatsLineAndExrWithAovsAndMetadata) {
 TEST_F(PrismRenderCli, CpuBackendWritesPng) {
     fs::path scene = write("ok.scene", "light 2 2 5\nsphere 0 0 0 1\n");
     fs::path out = dir_ / "out.png";
-    CliResult r = run(scene.string() + " -o " + out.string() + " --size 16x12 --backend cpu --quiet");
+    CliResult r =
+        run(scene.string() + " -o " + out.string() + " --size 16x12 --backend cpu --quiet");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     prism::LoadedImage image = prism::readImage(out);
     EXPECT_EQ(image.channels, 3);

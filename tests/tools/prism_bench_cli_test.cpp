@@ -1,0 +1,65 @@
+// prism-bench as a user meets it: help, a bad variant, and a tiny study's table and JSON.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+
+namespace fs = std::filesystem;
+using prism::test::CliResult;
+
+namespace {
+
+CliResult bench(const std::string &args) {
+    return prism::test::runTool(PRISM_BENCH_EXE, args);
+}
+
+class PrismBenchCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("prism-bench-test-" + std::to_string(::getpid()));
+        fs::create_directories(dir_);
+        scene_ = dir_ / "tiny.scene";
+        std::ofstream(scene_) << "light 2 2 5\nsphere 0 0 0 1\nsphere 1 1 -1 0.5\n"
+                                 "plane 0 -1 0 0 1 0\n";
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path dir_, scene_;
+};
+
+TEST_F(PrismBenchCli, HelpNamesTheVariants) {
+    CliResult r = bench("--help");
+    EXPECT_EQ(r.exitCode, 0);
+    for (const char *word : {"--variants", "--runs", "density=L", "no-shadows"})
+        EXPECT_NE(r.out.find(word), std::string::npos) << word;
+}
+
+TEST_F(PrismBenchCli, BadVariantIsNamed) {
+    CliResult r = bench(scene_.string() + " --variants auto,fast");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("fast"), std::string::npos) << r.out;
+}
+
+TEST_F(PrismBenchCli, TableAndJsonForEveryVariant) {
+    fs::path json = dir_ / "out.json";
+    CliResult r = bench(scene_.string() +
+                        " --size 16x12 --runs 3 --variants "
+                        "auto,off,grid=3+no-shadows --json " +
+                        json.string());
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.stdoutOnly.find("| tiny | grid=3+no-shadows |"), std::string::npos) << r.stdoutOnly;
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream(json));
+    ASSERT_EQ(doc["results"].size(), 3u);
+    for (const auto &result : doc["results"]) {
+        EXPECT_EQ(result["frame_ms"].size(), 3u);
+        EXPECT_EQ(result["rays"]["primary"].get<uint64_t>(), 16u * 12u);
+    }
+    EXPECT_GT(doc["results"][0]["rays"]["shadow"].get<uint64_t>(), 0u);
+    EXPECT_EQ(doc["results"][2]["rays"]["shadow"].get<uint64_t>(), 0u); // shadows switched off
+    EXPECT_EQ(doc["results"][1]["grid"], "off");
+    EXPECT_EQ(doc["results"][2]["grid"], "3x3x3");
+}
+
+} // namespace
