@@ -62,9 +62,10 @@ vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color,
                 vec3 target = light.positionRadius.xyz;
                 if (HAS_AREA_LIGHTS && light.positionRadius.w > 0.0) {
                     uint dim = PRISM_DIM_LIGHT_BASE + 2u * ((depth - 1u) * lightCount + l);
-                    float z = 1.0 - 2.0 * sample01(pixelIndex, sampleIndex, dim);
+                    vec2 u = stratifiedPair(pixelIndex, sampleIndex, frame.image.w, dim);
+                    float z = 1.0 - 2.0 * u.x;
                     float rxy = sqrt(max(0.0, 1.0 - z * z));
-                    float phi = 2.0 * kPi * sample01(pixelIndex, sampleIndex, dim + 1u);
+                    float phi = 2.0 * kPi * u.y;
                     target += light.positionRadius.w * vec3(rxy * cos(phi), rxy * sin(phi), z);
                 }
                 // A target below the surface's own horizon (an area-light sample, or a point

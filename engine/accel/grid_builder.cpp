@@ -42,7 +42,7 @@ class CellBinner {
 public:
     explicit CellBinner(const Grid &grid) : grid_(grid) {
         glm::dvec3 cell(grid.cellSize), mag = glm::max(glm::abs(glm::dvec3(grid.boundsMin)),
-                                                      glm::abs(glm::dvec3(grid.boundsMax)));
+                                                       glm::abs(glm::dvec3(grid.boundsMax)));
         double largest = std::max({mag.x, mag.y, mag.z});
         // Cells are widened a little so a hit found by the shader's float DDA near a cell face
         // is listed in the cell on either side of it (rounding may put the walk in either).
@@ -124,8 +124,8 @@ Grid buildGrid(const Scene &scene, const GridOptions &options) {
         grid.resolution = options.resolution;
         break;
     case GridOptions::Mode::Auto:
-        grid.resolution = chooseResolution(glm::dvec3(grid.boundsMax - grid.boundsMin),
-                                           primitives, double(options.density));
+        grid.resolution = chooseResolution(glm::dvec3(grid.boundsMax - grid.boundsMin), primitives,
+                                           double(options.density));
         break;
     }
     if (grid.cellCount() > kMaxGridCells)

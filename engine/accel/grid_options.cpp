@@ -50,8 +50,8 @@ GridOptions parseGridOption(std::string_view text) {
     uint64_t cells = uint64_t(options.resolution.x) * uint64_t(options.resolution.y) *
                      uint64_t(options.resolution.z);
     if (cells > kMaxGridCells)
-        badGrid(text, std::to_string(cells) + " cells is more than " +
-                          std::to_string(kMaxGridCells));
+        badGrid(text,
+                std::to_string(cells) + " cells is more than " + std::to_string(kMaxGridCells));
     return options;
 }
 

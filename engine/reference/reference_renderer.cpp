@@ -88,7 +88,7 @@ glm::dvec3 tracePixelSample(const Scene &scene, const CameraFrame &frame, int px
     uint32_t pixelIndex = uint32_t(py) * uint32_t(frame.width) + uint32_t(px);
     Ray ray = cameraRay(frame, pixelSamplePosition(px, py, pixelIndex, sampleIndex, spp));
     rays.primary += 1;
-    return reference::traceRadiance(scene, ray, {pixelIndex, sampleIndex}, maxDepth, rays);
+    return reference::traceRadiance(scene, ray, {pixelIndex, sampleIndex, spp}, maxDepth, rays);
 }
 
 RenderedImage renderReference(const Scene &scene, const RenderSettings &settings,

@@ -54,10 +54,9 @@ glm::dvec3 directLight(const Scene &scene, const Surface &s, glm::dvec3 facingGe
         glm::dvec3 target = center;
         if (light.radius > 0.0f) {
             uint32_t dim = PRISM_DIM_LIGHT_BASE + 2u * ((depth - 1u) * lightCount + l);
-            target +=
-                double(light.radius) *
-                uniformSpherePoint(gpu::sample01(sample.pixelIndex, sample.sampleIndex, dim),
-                                   gpu::sample01(sample.pixelIndex, sample.sampleIndex, dim + 1u));
+            glm::vec2 u = gpu::stratifiedPair(sample.pixelIndex, sample.sampleIndex,
+                                              sample.samplesPerPixel, dim);
+            target += double(light.radius) * uniformSpherePoint(u.x, u.y);
         }
         // A target below the surface's own horizon is shadowed by the surface itself.
         if (!(glm::dot(target - s.position, facingGeometric) > 0.0))

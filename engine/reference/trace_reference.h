@@ -17,6 +17,7 @@ namespace prism::reference {
 struct SampleId {
     uint32_t pixelIndex;
     uint32_t sampleIndex;
+    uint32_t samplesPerPixel = 1; // area-light points are stratified across the pixel's samples
 };
 
 // Ambient plus Blinn-Phong from every light whose shadow ray is clear. `facingGeometric` and

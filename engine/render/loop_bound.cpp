@@ -9,7 +9,9 @@ namespace {
 
 // Saturating arithmetic: the bound only needs to be compared with a budget.
 constexpr uint64_t kSaturated = uint64_t(1) << 62;
-uint64_t add(uint64_t a, uint64_t b) { return std::min(kSaturated, a + b); }
+uint64_t add(uint64_t a, uint64_t b) {
+    return std::min(kSaturated, a + b);
+}
 uint64_t mul(uint64_t a, uint64_t b) {
     return (a != 0 && b > kSaturated / a) ? kSaturated : std::min(kSaturated, a * b);
 }
@@ -37,9 +39,10 @@ uint64_t invocationIterationBound(const Scene &scene, const Grid &grid,
                                   const TracerFeatures &features) {
     uint64_t traversal = traversalIterationBound(scene, grid);
     uint64_t lights = scene.lights.size();
-    uint64_t perRay = add(add(1, traversal), add(lights + 1, mul(lights, features.shadows
-                                                                          ? traversal
-                                                                          : 0)));
+    // Per light: its iteration, the stratified light sample's short strata loops (<= 8), and
+    // the shadow ray's traversal.
+    uint64_t perLight = add(9, features.shadows ? traversal : 0);
+    uint64_t perRay = add(add(2, traversal), mul(lights, perLight));
     // A hit pushes a reflected ray where it reflects, a reflected and a refracted one where it
     // transmits.
     uint64_t children = (features.reflection ? 1 : 0) + (features.transmission ? 2 : 0);

@@ -40,5 +40,23 @@ PRISM_INLINE uint strataRows(uint samplesPerPixel) {
     return (samplesPerPixel + c - 1u) / c;
 }
 
+// Two uniform numbers for an area-light point, stratified across the pixel's samples: sample
+// `sampleIndex` of `samplesPerPixel` lands in its own stratum of the unit square (a grid where
+// the count is a square-ish product, else strips), so soft shadows converge much faster than
+// with independent points. A per-pixel, per-dimension rotation of the stratum index keeps the
+// light strata uncorrelated with the pixel-jitter strata.
+PRISM_INLINE vec2 stratifiedPair(uint pixelIndex, uint sampleIndex, uint samplesPerPixel,
+                                 uint dimension) {
+    uint columns = strataColumns(samplesPerPixel), rows = strataRows(samplesPerPixel);
+    if (columns * rows != samplesPerPixel) {
+        columns = 1u;
+        rows = samplesPerPixel;
+    }
+    uint k = (sampleIndex + sampleBits(pixelIndex, 0xA511E9B3u, dimension)) % samplesPerPixel;
+    float jx = sample01(pixelIndex, sampleIndex, dimension);
+    float jy = sample01(pixelIndex, sampleIndex, dimension + 1u);
+    return vec2((float(k % columns) + jx) / float(columns), (float(k / columns) + jy) / float(rows));
+}
+
 PRISM_NAMESPACE_END
 #endif

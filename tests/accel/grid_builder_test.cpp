@@ -22,7 +22,8 @@ void expectWellFormed(const Grid &g) {
 
 std::vector<uint32_t> primitivesOf(const Grid &g, glm::ivec3 cell) {
     uint32_t i = g.cellIndex(cell);
-    return {g.cellPrimitives.begin() + g.cellStart[i], g.cellPrimitives.begin() + g.cellStart[i + 1]};
+    return {g.cellPrimitives.begin() + g.cellStart[i],
+            g.cellPrimitives.begin() + g.cellStart[i + 1]};
 }
 
 TEST(GridBuilder, EmptySceneIsOneEmptyCell) {
@@ -90,7 +91,7 @@ TEST(GridBuilder, TriangleOnlyInCellsItOverlaps) {
     t.p[1] = {10.0f, 10.0f, 0.5f};
     t.p[2] = {10.0f, 10.0f, 0.6f};
     scene.triangles.push_back(t);
-    scene.spheres.push_back(Sphere{{0, 0, 0}, 0.01f, 0});  // stretch the bounds to a 10^3 box
+    scene.spheres.push_back(Sphere{{0, 0, 0}, 0.01f, 0}); // stretch the bounds to a 10^3 box
     scene.spheres.push_back(Sphere{{10, 10, 10}, 0.01f, 0});
     Grid g = buildGrid(scene, parseGridOption("10"));
     expectWellFormed(g);
@@ -118,7 +119,8 @@ TEST(GridBuilder, CellsListExactlyTheOverlappingPrimitives) {
     for (int z = 0; z < g.resolution.z; ++z)
         for (int y = 0; y < g.resolution.y; ++y)
             for (int x = 0; x < g.resolution.x; ++x) {
-                glm::dvec3 lo = glm::dvec3(g.boundsMin) + glm::dvec3(x, y, z) * glm::dvec3(g.cellSize);
+                glm::dvec3 lo =
+                    glm::dvec3(g.boundsMin) + glm::dvec3(x, y, z) * glm::dvec3(g.cellSize);
                 glm::dvec3 hi = lo + glm::dvec3(g.cellSize);
                 glm::dvec3 wide = 0.01 * glm::dvec3(g.cellSize);
                 std::vector<uint32_t> listed = primitivesOf(g, {x, y, z});
@@ -157,8 +159,7 @@ TEST(GridBuilder, StatisticsDescribeTheCells) {
     }
     EXPECT_EQ(g.maxPerCell, maxCount);
     EXPECT_EQ(g.emptyCells, empty);
-    EXPECT_NEAR(g.meanPerNonEmptyCell, double(g.cellPrimitives.size()) / double(512 - empty),
-                1e-9);
+    EXPECT_NEAR(g.meanPerNonEmptyCell, double(g.cellPrimitives.size()) / double(512 - empty), 1e-9);
 }
 
 } // namespace

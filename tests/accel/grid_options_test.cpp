@@ -23,8 +23,8 @@ TEST(GridOptions, CubeAndPerAxisCounts) {
 }
 
 TEST(GridOptions, RejectsBadText) {
-    for (const char *bad : {"", "0", "-3", "1025", "ten", "4x4", "4x4x", "x4x4", "4x4x4x4",
-                            "4.5", "4 ", "Auto", "256x256x257"}) {
+    for (const char *bad : {"", "0", "-3", "1025", "ten", "4x4", "4x4x", "x4x4", "4x4x4x4", "4.5",
+                            "4 ", "Auto", "256x256x257"}) {
         SCOPED_TRACE(bad);
         try {
             parseGridOption(bad);

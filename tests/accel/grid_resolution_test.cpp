@@ -6,7 +6,9 @@
 namespace prism {
 namespace {
 
-int cells(glm::ivec3 r) { return r.x * r.y * r.z; }
+int cells(glm::ivec3 r) {
+    return r.x * r.y * r.z;
+}
 
 TEST(GridResolution, CubeGetsCubicCellsNearTheTarget) {
     glm::ivec3 r = chooseResolution(glm::dvec3(2.0), 1000, 2.0);

@@ -98,8 +98,8 @@ void checkRays(const Scene &scene, const Grid &g, unsigned seed, int rays) {
             double tol = 1e-7 * (1.0 + c.t);
             bool found = false;
             for (const Visited &v : cells)
-                found = found || (c.t >= v.tEnter - tol && c.t <= v.tExit + tol &&
-                                  listed(g, v.cell, c.id));
+                found = found ||
+                        (c.t >= v.tEnter - tol && c.t <= v.tExit + tol && listed(g, v.cell, c.id));
             ASSERT_TRUE(found) << "ray " << r << ": primitive " << c.id << " at t=" << c.t
                                << " not in any visited cell";
             ++crossingsChecked;

@@ -21,14 +21,12 @@ TEST(SphereOverlapsBox, InsideTouchingAndOutsideTheCorner) {
 TEST(TriangleOverlapsBox, InsideCrossingAndAlongTheBoxBoundingBox) {
     EXPECT_TRUE(triangleOverlapsBox({0.2, 0.2, 0.5}, {0.8, 0.2, 0.5}, {0.5, 0.8, 0.5}, kLo, kHi));
     // A huge triangle whose interior cuts through the box though no vertex is near it.
-    EXPECT_TRUE(
-        triangleOverlapsBox({-10, -10, 0.5}, {10, -10, 0.5}, {0, 10, 0.5}, kLo, kHi));
+    EXPECT_TRUE(triangleOverlapsBox({-10, -10, 0.5}, {10, -10, 0.5}, {0, 10, 0.5}, kLo, kHi));
     // Plane and bounding box both cut the box, but the triangle lies beyond the box's
     // (1, 1) edge: only the edge x box-axis cross product separates them.
-    EXPECT_FALSE(triangleOverlapsBox({2.6, -0.5, 0.5}, {-0.5, 2.6, 0.5}, {2.6, 2.6, 0.5}, kLo,
-                                     kHi));
-    EXPECT_TRUE(triangleOverlapsBox({1.9, -0.5, 0.5}, {-0.5, 1.9, 0.5}, {1.9, 1.9, 0.5}, kLo,
-                                    kHi));
+    EXPECT_FALSE(
+        triangleOverlapsBox({2.6, -0.5, 0.5}, {-0.5, 2.6, 0.5}, {2.6, 2.6, 0.5}, kLo, kHi));
+    EXPECT_TRUE(triangleOverlapsBox({1.9, -0.5, 0.5}, {-0.5, 1.9, 0.5}, {1.9, 1.9, 0.5}, kLo, kHi));
     // Bounding box overlaps, but the tilted plane passes beyond the box's far corner.
     EXPECT_FALSE(triangleOverlapsBox({3.5, 0, 0}, {0, 3.5, 0}, {0, 0, 3.5}, kLo, kHi));
     EXPECT_TRUE(triangleOverlapsBox({2.5, 0, 0}, {0, 2.5, 0}, {0, 0, 2.5}, kLo, kHi));
@@ -50,8 +48,8 @@ TEST(TriangleOverlapsBox, NoFalseNegativesOnRandomTriangles) {
             for (int j = 0; i + j <= n && !sampledInside; ++j) {
                 double b1 = double(i) / n, b2 = double(j) / n;
                 glm::dvec3 q = (1 - b1 - b2) * p[0] + b1 * p[1] + b2 * p[2];
-                sampledInside = glm::all(glm::greaterThanEqual(q, kLo)) &&
-                                glm::all(glm::lessThanEqual(q, kHi));
+                sampledInside =
+                    glm::all(glm::greaterThanEqual(q, kLo)) && glm::all(glm::lessThanEqual(q, kHi));
             }
         bool overlaps = triangleOverlapsBox(p[0], p[1], p[2], kLo, kHi);
         if (sampledInside) {
@@ -89,7 +87,8 @@ TEST(TriangleOverlapsBox, RejectsTrianglesOutsideAnEnlargedBox) {
                 best = std::min(best, glm::length(d));
             }
         double spacing = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]),
-                                   glm::length(p[0] - p[2])}) / n;
+                                   glm::length(p[0] - p[2])}) /
+                         n;
         EXPECT_LE(best, spacing) << "trial " << trial;
     }
     EXPECT_GT(rejected, 200);

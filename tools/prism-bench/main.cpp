@@ -59,7 +59,8 @@ nlohmann::json toJson(const BenchResult &r) {
             {"trace_ms_median", r.medianMs()},
             {"mrays_per_s", r.mraysPerSecond()},
             {"rays",
-             {{"primary", r.rays.primary}, {"shadow", r.rays.shadow},
+             {{"primary", r.rays.primary},
+              {"shadow", r.rays.shadow},
               {"secondary", r.rays.secondary}}}};
 }
 
