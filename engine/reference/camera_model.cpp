@@ -6,27 +6,6 @@
 
 namespace prism {
 
-CameraFrame makeCameraFrame(const Camera &camera, int width, int height) {
-    // Same basis as engine/render/frame_params.cpp, kept in double.
-    glm::dvec3 eye(camera.eye), look(camera.look), up(camera.up);
-    glm::dvec3 forward = glm::normalize(look - eye);
-    glm::dvec3 right = glm::normalize(glm::cross(forward, up));
-    glm::dvec3 trueUp = glm::cross(right, forward);
-    double aspect = double(width) / double(height);
-    // Half the image plane's height at unit distance (perspective) or in world units (ortho).
-    double halfHeight = camera.isOrtho() ? 0.5 * double(camera.orthoHeight)
-                                         : std::tan(glm::radians(double(camera.fovDegrees)) * 0.5);
-    CameraFrame frame;
-    frame.eye = eye;
-    frame.forward = forward;
-    frame.du = right * (halfHeight * aspect);
-    frame.dv = trueUp * halfHeight;
-    frame.ortho = camera.isOrtho();
-    frame.width = width;
-    frame.height = height;
-    return frame;
-}
-
 Ray cameraRay(const CameraFrame &frame, glm::dvec2 pixelPosition) {
     glm::dvec2 uv = pixelPosition / glm::dvec2(frame.width, frame.height);
     double x = 2.0 * uv.x - 1.0, y = 1.0 - 2.0 * uv.y;

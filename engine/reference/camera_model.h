@@ -5,19 +5,10 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/camera_frame.h"
 #include "scene/scene.h"
 
 namespace prism {
-
-// The camera reduced to what ray generation needs, as the shader's GpuFrameParams but unrounded:
-// du is right * (h * a) (perspective) or right * (H / 2) * a (ortho), dv is trueUp * h or H / 2.
-struct CameraFrame {
-    glm::dvec3 eye, forward, du, dv;
-    bool ortho;
-    int width, height;
-};
-
-CameraFrame makeCameraFrame(const Camera &camera, int width, int height);
 
 struct Ray {
     glm::dvec3 origin, dir; // dir is unit length

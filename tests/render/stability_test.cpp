@@ -16,6 +16,20 @@ namespace {
 
 class Stability : public GpuTest {};
 
+// `far` spheres that no ray hits but every ray tests (with the grid off), then a lit sphere
+// tested last and one that shadows it: loops as long as wanted, a picture easy to check.
+Scene manySpheresScene(int far) {
+    Scene scene;
+    scene.materials.push_back(Material{"default"});
+    scene.camera.eye = {0.0f, 0.0f, 5.0f};
+    scene.lights.push_back(Light{{0.0f, 0.0f, 10.0f}, {1.0f, 1.0f, 1.0f}, 0.0f});
+    for (int i = 0; i < far; ++i)
+        scene.spheres.push_back(Sphere{{1000.0f + float(i), 1000.0f, 1000.0f}, 0.1f, 0});
+    scene.spheres.push_back(Sphere{{0.0f, 0.0f, 0.0f}, 1.5f, 0});
+    scene.spheres.push_back(Sphere{{0.5f, 0.0f, 7.0f}, 0.5f, 0});
+    return scene;
+}
+
 // The same scene at 1e-3, 1 and 1e3 and moved 1e4 away must give the same picture: offsets
 // are relative to |P|, so no acne appears and no contact shadow is lost at any scale.
 // Scaling keeps float's relative precision, so the images match but for 0.5% of pixels (float
@@ -48,8 +62,7 @@ TEST_F(Stability, SameImageAtEveryScaleAndDistance) {
                       Variant{1.0f / 1024.0f, glm::vec3(8.0f, -8.0f, 8.0f)}}) {
         Scene scene = transformed(base, v.scale, v.offset);
         TracedImage image = renderGpu(context(), scene, w, h).image;
-        SCOPED_TRACE("scale " + std::to_string(v.scale) + " offset " +
-                     std::to_string(v.offset.x));
+        SCOPED_TRACE("scale " + std::to_string(v.scale) + " offset " + std::to_string(v.offset.x));
         ImageDifference flat = compareImages(image.rgba, reference.rgba, 0.05, band);
         EXPECT_EQ(flat.nonFinite, 0u);
         EXPECT_EQ(flat.differing, 0u) << "away from edges: " << describe(flat);
@@ -124,8 +137,7 @@ TEST_F(Stability, SharedEdgesOfATriangleFanNeverCrack) {
     scene.camera.look = {0.0f, 0.0f, 0.0f};
     scene.camera.orthoHeight = 4.25f; // 17 px: centres at -2, -1.75, ..., 2
     for (const char *grid : {"off", "auto", "4", "3x5x1"}) {
-        TracedImage image =
-            renderGpu(context(), scene, 17, 17, 1, 1, parseGridOption(grid)).image;
+        TracedImage image = renderGpu(context(), scene, 17, 17, 1, 1, parseGridOption(grid)).image;
         int leaks = 0;
         for (uint32_t j = 1; j + 1 < 17; ++j)
             for (uint32_t i = 1; i + 1 < 17; ++i)
@@ -152,9 +164,8 @@ TEST_F(Stability, GrazingRaysOnPlanesAndSpheres) {
 TEST_F(Stability, GridResolutionDoesNotChangeTheImage) {
     Scene scene = stabilityScene();
     for (int k = 0; k < 40; ++k) // a cloud of small spheres spread over many cells
-        scene.spheres.push_back(Sphere{{-3.0f + 0.15f * k, 0.2f + 0.05f * (k % 7),
-                                        2.0f - 0.1f * (k % 11)},
-                                       0.12f, 4});
+        scene.spheres.push_back(
+            Sphere{{-3.0f + 0.15f * k, 0.2f + 0.05f * (k % 7), 2.0f - 0.1f * (k % 11)}, 0.12f, 4});
     TracedImage off = renderGpu(context(), scene, 64, 48, 1, 5, parseGridOption("off")).image;
     for (const char *grid : {"auto", "1", "10", "7x3x5", "40"}) {
         TracedImage image = renderGpu(context(), scene, 64, 48, 1, 5, parseGridOption(grid)).image;
@@ -183,14 +194,7 @@ TEST_F(Stability, LoopBudgetIsReportedNotSilent) {
 TEST_F(Stability, LavapipeLoopCutIsAlwaysCaught) {
     if (!context().isLavapipe())
         GTEST_SKIP() << "only lavapipe limits shader loops";
-    Scene scene;
-    scene.materials.push_back(Material{"default"});
-    scene.camera.eye = {0.0f, 0.0f, 5.0f};
-    scene.lights.push_back(Light{{0.0f, 0.0f, 10.0f}, {1.0f, 1.0f, 1.0f}, 0.0f});
-    for (int i = 0; i < 33000; ++i) // far away: never hit, but tested by every ray
-        scene.spheres.push_back(Sphere{{1000.0f + float(i), 1000.0f, 1000.0f}, 0.1f, 0});
-    scene.spheres.push_back(Sphere{{0.0f, 0.0f, 0.0f}, 1.5f, 0}); // tested last
-    scene.spheres.push_back(Sphere{{0.5f, 0.0f, 7.0f}, 0.5f, 0}); // casts a shadow on it
+    Scene scene = manySpheresScene(33000);
     std::vector<float> truth = renderCpu(scene, 32, 32, 1, 1);
 
     TracerOptions unchecked;
@@ -217,14 +221,7 @@ TEST_F(Stability, LavapipeLoopCutIsAlwaysCaught) {
 TEST_F(Stability, UncountedShaderNearTheLimitIsStillExact) {
     if (!context().isLavapipe())
         GTEST_SKIP() << "only lavapipe limits shader loops";
-    Scene scene;
-    scene.materials.push_back(Material{"default"});
-    scene.camera.eye = {0.0f, 0.0f, 5.0f};
-    scene.lights.push_back(Light{{0.0f, 0.0f, 10.0f}, {1.0f, 1.0f, 1.0f}, 0.0f});
-    for (int i = 0; i < 29898; ++i)
-        scene.spheres.push_back(Sphere{{1000.0f + float(i), 1000.0f, 1000.0f}, 0.1f, 0});
-    scene.spheres.push_back(Sphere{{0.0f, 0.0f, 0.0f}, 1.5f, 0});
-    scene.spheres.push_back(Sphere{{0.5f, 0.0f, 7.0f}, 0.5f, 0});
+    Scene scene = manySpheresScene(29898);
     Grid grid = buildGrid(scene, parseGridOption("off"));
     TracerOptions options;
     options.maxDepth = 1;
