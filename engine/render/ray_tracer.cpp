@@ -50,8 +50,7 @@ uint64_t counterValue(const gpu::GpuStats &stats, int which) {
 
 RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid, uint32_t width,
                      uint32_t height, const TracerOptions &options)
-    : context_(context), width_(width), height_(height), features_(featuresOf(scene)),
-      runner_(context) {
+    : context_(context), features_(featuresOf(scene)), runner_(context) {
     if (options.maxDepth < 1 || options.maxDepth > 64)
         throw Error("ray depth " + std::to_string(options.maxDepth) + " is outside 1..64");
     features_.maxDepth = options.maxDepth;
@@ -85,16 +84,11 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     sceneBuffers_.push_back(upload(packed.textures.data(), bytesOf(packed.textures), "texture"));
     sceneBuffers_.push_back(upload(packed.texels.data(), bytesOf(packed.texels), "texel"));
     stats_ = vk::Buffer(context, sizeof(gpu::GpuStats),
-                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT, // snapshots for the viewer
                         true);
 
-    VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                              VK_IMAGE_USAGE_SAMPLED_BIT;
-    accum_ = vk::Image(context, width, height, VK_FORMAT_R32G32B32A32_SFLOAT, usage);
-    // The AOV image is full size only when asked for: a scene pays for what it uses.
-    uint32_t aovWidth = options.writeAov ? width : 1, aovHeight = options.writeAov ? height : 1;
-    aov_ = vk::Image(context, aovWidth, aovHeight, VK_FORMAT_R32G32B32A32_SFLOAT, usage);
-    transitionImages();
+    createImages(width, height);
 
     VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
@@ -114,6 +108,53 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     for (uint32_t i = 0; i < sceneBuffers_.size(); ++i)
         pipeline_->bindBuffer(2 + i, sceneBuffers_[i].handle());
     pipeline_->bindBuffer(13, stats_.handle());
+}
+
+void RayTracer::resize(uint32_t width, uint32_t height) {
+    vkDeviceWaitIdle(context_.device()); // no submission may still use the old images
+    createImages(width, height);
+    pipeline_->bindStorageImage(0, accum_.view());
+    pipeline_->bindStorageImage(1, aov_.view());
+}
+
+void RayTracer::recordResetCounters(VkCommandBuffer commands) {
+    vkCmdFillBuffer(commands, stats_.handle(), 0, VK_WHOLE_SIZE, 0);
+    VkMemoryBarrier fill{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    fill.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    fill.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &fill, 0, nullptr, 0,
+                         nullptr);
+}
+
+void RayTracer::recordCounterSnapshot(VkCommandBuffer commands, VkBuffer target) const {
+    VkMemoryBarrier toCopy{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    toCopy.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    toCopy.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &toCopy, 0, nullptr, 0, nullptr);
+    VkBufferCopy region{0, 0, sizeof(gpu::GpuStats)};
+    vkCmdCopyBuffer(commands, stats_.handle(), target, 1, &region);
+    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    // Also orders the next frame's counter updates after this read.
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1,
+                         &toHost, 0, nullptr, 0, nullptr);
+}
+
+VkDeviceSize RayTracer::counterBytes() { return sizeof(gpu::GpuStats); }
+
+FrameResult RayTracer::decodeCounters(const void *snapshot) {
+    gpu::GpuStats stats;
+    std::memcpy(&stats, snapshot, sizeof(stats));
+    FrameResult result;
+    result.rays.primary = counterValue(stats, 0);
+    result.rays.shadow = counterValue(stats, 1);
+    result.rays.secondary = counterValue(stats, 2);
+    result.overBudgetPixels = counterValue(stats, 3);
+    return result;
 }
 
 RayTracer::~RayTracer() {
@@ -145,7 +186,16 @@ vk::Buffer RayTracer::upload(const void *data, size_t bytes, const char *what) {
     return target;
 }
 
-void RayTracer::transitionImages() {
+void RayTracer::createImages(uint32_t width, uint32_t height) {
+    width_ = width;
+    height_ = height;
+    VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                              VK_IMAGE_USAGE_SAMPLED_BIT;
+    accum_ = vk::Image(context_, width, height, VK_FORMAT_R32G32B32A32_SFLOAT, usage);
+    // The AOV image is full size only when asked for: a scene pays for what it uses.
+    bool aov = features_.writeAov;
+    aov_ = vk::Image(context_, aov ? width : 1, aov ? height : 1, VK_FORMAT_R32G32B32A32_SFLOAT,
+                     usage);
     runner_.run([&](VkCommandBuffer commands) {
         for (const vk::Image *image : {&accum_, &aov_})
             imageBarrier(commands, image->handle(), VK_IMAGE_LAYOUT_UNDEFINED,
@@ -183,15 +233,8 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
         Timer hostTimer;
         runner_.run([&](VkCommandBuffer commands) {
             vkCmdResetQueryPool(commands, timestamps_, 0, 2);
-            if (chunk == 0) {
-                vkCmdFillBuffer(commands, stats_.handle(), 0, VK_WHOLE_SIZE, 0);
-                VkMemoryBarrier fill{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-                fill.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-                fill.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-                vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &fill, 0,
-                                     nullptr, 0, nullptr);
-            }
+            if (chunk == 0)
+                recordResetCounters(commands);
             vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
             recordSamples(commands, camera, done, end - done, samplesPerPixel);
             vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
@@ -215,12 +258,9 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
         if (progress)
             progress(double(done) / samplesPerPixel);
     }
-    gpu::GpuStats stats;
-    std::memcpy(&stats, stats_.mapped(), sizeof(stats));
-    result.rays.primary = counterValue(stats, 0);
-    result.rays.shadow = counterValue(stats, 1);
-    result.rays.secondary = counterValue(stats, 2);
-    result.overBudgetPixels = counterValue(stats, 3);
+    FrameResult counted = decodeCounters(stats_.mapped());
+    result.rays = counted.rays;
+    result.overBudgetPixels = counted.overBudgetPixels;
     return result;
 }
 

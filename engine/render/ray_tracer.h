@@ -58,6 +58,17 @@ public:
     // Copies the accumulation (and AOVs) to the host and divides by the sample count.
     TracedImage readback(uint32_t samplesPerPixel);
 
+    // For callers that record their own frames (the viewer). The ray and over-budget counters
+    // add up over every dispatch until reset. A snapshot copies them, after the dispatches
+    // recorded before it, into `target` (host-visible, counterBytes() long) for decodeCounters.
+    void recordResetCounters(VkCommandBuffer commands);
+    void recordCounterSnapshot(VkCommandBuffer commands, VkBuffer target) const;
+    static VkDeviceSize counterBytes();
+    static FrameResult decodeCounters(const void *snapshot); // gpuMs stays 0
+    // New accumulation (and AOV) images of another size; waits for the device to be idle.
+    // Afterwards the accumulation is undefined until sample 0 is traced again.
+    void resize(uint32_t width, uint32_t height);
+
     const vk::Image &accumulation() const { return accum_; }
     const TracerFeatures &features() const { return features_; }
     uint32_t width() const { return width_; }
@@ -65,10 +76,10 @@ public:
 
 private:
     vk::Buffer upload(const void *data, size_t bytes, const char *what);
-    void transitionImages();
+    void createImages(uint32_t width, uint32_t height);
 
     vk::Context &context_;
-    uint32_t width_, height_;
+    uint32_t width_ = 0, height_ = 0;
     TracerFeatures features_;
     vk::CommandRunner runner_;
     std::vector<vk::Buffer> sceneBuffers_; // bindings 2..12, in binding order

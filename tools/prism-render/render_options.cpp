@@ -1,25 +1,14 @@
 #include "render_options.h"
 
 #include <cstdlib>
-#include <regex>
 
 #include <CLI/CLI.hpp>
 
 #include "core/error.h"
+#include "size_option.h"
 
 namespace prism {
 namespace {
-
-void parseSize(const std::string &text, uint32_t &width, uint32_t &height) {
-    std::smatch m;
-    static const std::regex pattern("([0-9]{1,5})x([0-9]{1,5})");
-    if (!std::regex_match(text, m, pattern))
-        throw Error("--size must look like 1024x768, got \"" + text + "\"");
-    width = uint32_t(std::stoul(m[1]));
-    height = uint32_t(std::stoul(m[2]));
-    if (width < 1 || height < 1 || width > 16384 || height > 16384)
-        throw Error("--size must be between 1x1 and 16384x16384, got \"" + text + "\"");
-}
 
 void parseAovs(const std::string &text, RenderOptions &options) {
     size_t start = 0;
@@ -98,7 +87,9 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
     }
     options.scenePath = scene;
     options.outputPath = output;
-    parseSize(size, options.width, options.height);
+    ImageSize parsed = parseSizeOption(size);
+    options.width = parsed.width;
+    options.height = parsed.height;
     options.grid = parseGridOption(options.gridText);
     options.grid.density = density;
     if (!aov.empty())

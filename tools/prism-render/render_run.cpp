@@ -11,6 +11,7 @@
 #include "io/image_writer.h"
 #include "progress_line.h"
 #include "reference/reference_renderer.h"
+#include "render_metadata.h"
 #include "render/ray_tracer.h"
 #include "scene/scene_loader.h"
 #include "vk/context.h"
@@ -25,10 +26,6 @@ struct RenderOutcome {
     RayCounts rays;              // of one frame
     std::string device;
 };
-
-std::string resolutionText(const glm::ivec3 &r) {
-    return std::to_string(r.x) + "x" + std::to_string(r.y) + "x" + std::to_string(r.z);
-}
 
 RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const Grid &grid) {
     vk::ContextOptions contextOptions;
@@ -132,23 +129,21 @@ void runRender(const RenderOptions &o) {
     double medianMs = median(out.frameMs);
     double mraysPerSecond = double(out.rays.total()) / (bestMs * 1e3);
 
-    ImageMetadata meta;
-    meta.strings = {{"prism:commandLine", o.commandLine},
-                    {"prism:scene", o.scenePath.string()},
-                    {"prism:device", out.device},
-                    {"prism:backend", o.backend == Backend::Cpu ? "cpu" : "vulkan"},
-                    {"prism:gridResolution", o.backend == Backend::Cpu
-                                                 ? std::string("none (brute force)")
-                                                 : resolutionText(grid.resolution)},
-                    {"prism:raysPrimary", std::to_string(out.rays.primary)},
-                    {"prism:raysShadow", std::to_string(out.rays.shadow)},
-                    {"prism:raysSecondary", std::to_string(out.rays.secondary)}};
-    meta.floats = {{"prism:renderTimeMs", float(bestMs)},
-                   {"prism:renderTimeMedianMs", float(medianMs)},
-                   {"prism:gridBuildMs", float(buildMs)},
-                   {"prism:mraysPerSecond", float(mraysPerSecond)}};
-    meta.ints = {{"prism:samplesPerPixel", int(o.samplesPerPixel)},
-                 {"prism:maxDepth", int(o.maxDepth)}};
+    RenderRecord record;
+    record.commandLine = o.commandLine;
+    record.scenePath = o.scenePath.string();
+    record.device = out.device;
+    record.backend = o.backend == Backend::Cpu ? "cpu" : "vulkan";
+    record.gridResolution = o.backend == Backend::Cpu ? std::string("none (brute force)")
+                                                      : resolutionText(grid.resolution);
+    record.rays = out.rays;
+    record.renderTimeMs = bestMs;
+    record.renderTimeMedianMs = medianMs;
+    record.gridBuildMs = buildMs;
+    record.mraysPerSecond = mraysPerSecond;
+    record.samplesPerPixel = o.samplesPerPixel;
+    record.maxDepth = o.maxDepth;
+    ImageMetadata meta = renderMetadata(record);
     writeImage(o.outputPath, out.image, meta);
 
     if (o.stats) {

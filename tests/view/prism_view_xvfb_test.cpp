@@ -1,0 +1,155 @@
+// prism-view as a user runs it, headless: under Xvfb with lavapipe and validation layers on (any
+// message makes prism-view exit 1). A scripted run holds the scene's camera, resizes the window
+// twice, then saves the converged accumulation; it must equal prism-render's image of the same
+// scene, size and sample count, because both record the same tracer dispatches.
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "cli_runner.h" // tests/tools
+#include "io/image_reader.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using prism::test::CliResult;
+
+CliResult run(const std::string &command) {
+    return prism::test::runTool(command, "");
+}
+
+bool haveXvfbRun() {
+    return std::system("command -v xvfb-run >/dev/null 2>&1") == 0;
+}
+
+// -a picks a free display number; the screen is larger than any window the tests open.
+std::string underXvfb(const std::string &args) {
+    return "xvfb-run -a -s \"-screen 0 1024x768x24\" " + std::string(PRISM_VIEW_EXE) + " " + args;
+}
+
+class PrismViewXvfb : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (!haveXvfbRun())
+            GTEST_SKIP() << "xvfb-run is not installed (Debian: apt install xvfb); CI has it";
+        dir_ = fs::temp_directory_path() /
+               ("prism-view-test-" + std::to_string(::getpid()) + "-" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override {
+        if (!dir_.empty())
+            fs::remove_all(dir_);
+    }
+    fs::path write(const std::string &name, const std::string &text) {
+        std::ofstream(dir_ / name) << text;
+        return dir_ / name;
+    }
+    fs::path dir_;
+};
+
+// Showcase: triangles with a texture, glass, mirrors and two area lights, so the random numbers
+// of soft shadows and the anti-aliasing strata are both compared. 320x240 with 4 samples keeps
+// the run near 20 s on two cores.
+TEST_F(PrismViewXvfb, ScriptedRunWithResizesMatchesPrismRender) {
+    std::string scene = std::string(PRISM_SCENES_DIR) + "/showcase.scene";
+    fs::path shot = dir_ / "view.exr", reference = dir_ / "render.exr";
+    // Frames 0-2 trace at 320x240, frame 3 shrinks the window (the accumulation restarts at
+    // 200x150), frame 6 restores it; the script ends once 4 samples have accumulated again.
+    CliResult view = run(underXvfb(scene +
+                                   " --size 320x240 --spp 4 --script-frames 10 "
+                                   "--resize-at 3:200x150 --resize-at 6:320x240 "
+                                   "--screenshot " +
+                                   shot.string() + " --validation"));
+    ASSERT_EQ(view.exitCode, 0) << view.out;
+    EXPECT_EQ(view.out.find("validation"), std::string::npos) << view.out;
+    size_t small = view.out.find("swapchain 200x150");
+    ASSERT_NE(small, std::string::npos) << "the window was not resized:\n" << view.out;
+    EXPECT_NE(view.out.find("swapchain 320x240", small), std::string::npos) << view.out;
+    ASSERT_TRUE(fs::exists(shot));
+    ASSERT_TRUE(fs::exists(dir_ / "view.png"));
+
+    CliResult render = run(std::string(PRISM_RENDER_EXE) + " " + scene + " --size 320x240 " +
+                           "--spp 4 --quiet --validation -o " + reference.string());
+    ASSERT_EQ(render.exitCode, 0) << render.out;
+
+    prism::LoadedImage a = prism::readImage(shot), b = prism::readImage(reference);
+    ASSERT_EQ(a.width, 320);
+    ASSERT_EQ(a.height, 240);
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    // Same shader, specialization, rays and summation order: the images should be bit-identical.
+    // The tolerance (1e-6, far below one 8-bit step of 1/255) only forgives a driver that
+    // reorders float additions; any sampling or camera mismatch moves pixels by >1e-2.
+    double largest = 0.0;
+    for (size_t i = 0; i < a.pixels.size(); ++i)
+        largest = std::max(largest, double(std::abs(a.pixels[i] - b.pixels[i])));
+    EXPECT_LE(largest, 1e-6);
+
+    // The screenshot carries prism-render's metadata.
+    int spp = 0;
+    for (const auto &[name, value] : a.metadata.ints)
+        if (name == "prism:samplesPerPixel")
+            spp = value;
+    EXPECT_EQ(spp, 4);
+    bool hasDevice = false, hasRays = false;
+    for (const auto &[name, value] : a.metadata.strings) {
+        hasDevice = hasDevice || name == "prism:device";
+        hasRays =
+            hasRays || (name == "prism:raysPrimary" && value == std::to_string(320 * 240 * 4));
+    }
+    EXPECT_TRUE(hasDevice);
+    EXPECT_TRUE(hasRays) << "the primary ray count covers exactly the 4 accumulated samples";
+}
+
+// An edit that breaks the scene shows its FILE:LINE message and keeps the last good scene.
+TEST_F(PrismViewXvfb, BrokenReloadKeepsTheLastGoodScene) {
+    fs::path good = write("good.scene", "camera eye 0 0 5 look 0 0 0\nlight 2 2 5\n"
+                                        "sphere 0 0 0 1\nplane 0 -1 0 0 1 0\n");
+    fs::path broken = write("broken.scene", "light 2 2 5\nsphere 0 0 0 oops\n");
+    fs::path shot = dir_ / "view.exr", reference = dir_ / "render.exr";
+    CliResult view = run(underXvfb(good.string() + " --size 64x48 --spp 2 --script-frames 6 " +
+                                   "--script-reload 3:" + broken.string() + " --screenshot " +
+                                   shot.string() + " --validation"));
+    ASSERT_EQ(view.exitCode, 0) << view.out;
+    EXPECT_NE(view.out.find("broken.scene:2:"), std::string::npos) << view.out;
+    CliResult render = run(std::string(PRISM_RENDER_EXE) + " " + good.string() +
+                           " --size 64x48 --spp 2 --quiet -o " + reference.string());
+    ASSERT_EQ(render.exitCode, 0) << render.out;
+    prism::LoadedImage a = prism::readImage(shot), b = prism::readImage(reference);
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    double largest = 0.0;
+    for (size_t i = 0; i < a.pixels.size(); ++i)
+        largest = std::max(largest, double(std::abs(a.pixels[i] - b.pixels[i])));
+    EXPECT_LE(largest, 1e-6) << "the good scene stayed on screen";
+}
+
+TEST_F(PrismViewXvfb, BenchmarkPrintsOneJsonLine) {
+    fs::path scene = write("s.scene", "light 2 2 5\nsphere 0 0 0 1\n");
+    CliResult view = run(underXvfb(scene.string() + " --size 64x48 --benchmark 8 --validation"));
+    ASSERT_EQ(view.exitCode, 0) << view.out;
+    for (const char *key : {"\"frame_ms_median\"", "\"frame_ms_p95\"", "\"frame_ms_p99\"",
+                            "\"mrays_per_s\"", "\"frames\":8"})
+        EXPECT_NE(view.out.find(key), std::string::npos) << key << "\n" << view.out;
+}
+
+TEST_F(PrismViewXvfb, ErrorsSayWhatIsWrong) {
+    fs::path broken = write("broken.scene", "sphere 0 0 0\n");
+    CliResult scene = run(underXvfb(broken.string()));
+    EXPECT_EQ(scene.exitCode, 1);
+    EXPECT_NE(scene.out.find("broken.scene:1:"), std::string::npos) << scene.out;
+
+    // No display at all: say so, and how to run headless.
+    CliResult noDisplay = run("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(PRISM_VIEW_EXE) +
+                              " " + broken.string());
+    EXPECT_EQ(noDisplay.exitCode, 1);
+    EXPECT_NE(noDisplay.out.find("needs a display"), std::string::npos) << noDisplay.out;
+    EXPECT_NE(noDisplay.out.find("xvfb-run"), std::string::npos) << noDisplay.out;
+}
+
+} // namespace

@@ -1,0 +1,28 @@
+#include "render_metadata.h"
+
+namespace prism {
+
+std::string resolutionText(const glm::ivec3 &r) {
+    return std::to_string(r.x) + "x" + std::to_string(r.y) + "x" + std::to_string(r.z);
+}
+
+ImageMetadata renderMetadata(const RenderRecord &r) {
+    ImageMetadata meta;
+    meta.strings = {{"prism:commandLine", r.commandLine},
+                    {"prism:scene", r.scenePath},
+                    {"prism:device", r.device},
+                    {"prism:backend", r.backend},
+                    {"prism:gridResolution", r.gridResolution},
+                    {"prism:raysPrimary", std::to_string(r.rays.primary)},
+                    {"prism:raysShadow", std::to_string(r.rays.shadow)},
+                    {"prism:raysSecondary", std::to_string(r.rays.secondary)}};
+    meta.floats = {{"prism:renderTimeMs", float(r.renderTimeMs)},
+                   {"prism:renderTimeMedianMs", float(r.renderTimeMedianMs)},
+                   {"prism:gridBuildMs", float(r.gridBuildMs)},
+                   {"prism:mraysPerSecond", float(r.mraysPerSecond)}};
+    meta.ints = {{"prism:samplesPerPixel", int(r.samplesPerPixel)},
+                 {"prism:maxDepth", int(r.maxDepth)}};
+    return meta;
+}
+
+} // namespace prism

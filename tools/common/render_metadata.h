@@ -1,0 +1,34 @@
+#pragma once
+// The metadata every image a Prism tool writes carries (EXR attributes, PNG text chunks), so
+// an image says how it was made whichever tool made it.
+#include <cstdint>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "core/ray_counts.h"
+#include "io/image_metadata.h"
+
+namespace prism {
+
+struct RenderRecord {
+    std::string commandLine; // as typed
+    std::string scenePath;
+    std::string device;
+    std::string backend;        // "vulkan" or "cpu"
+    std::string gridResolution; // resolutionText(grid.resolution), or why there is none
+    RayCounts rays;             // of one frame
+    double renderTimeMs = 0.0;  // best frame
+    double renderTimeMedianMs = 0.0;
+    double gridBuildMs = 0.0;
+    double mraysPerSecond = 0.0;
+    uint32_t samplesPerPixel = 1;
+    uint32_t maxDepth = 5;
+};
+
+ImageMetadata renderMetadata(const RenderRecord &record);
+
+// "48x12x40"
+std::string resolutionText(const glm::ivec3 &resolution);
+
+} // namespace prism

@@ -1,0 +1,103 @@
+#include "view_options.h"
+
+#include <cstdlib>
+#include <regex>
+
+#include <CLI/CLI.hpp>
+
+#include "core/error.h"
+#include "size_option.h"
+
+namespace prism {
+namespace {
+
+ScriptedResize parseResize(const std::string &text) {
+    std::smatch m;
+    static const std::regex pattern("([0-9]{1,9}):(.*)");
+    if (!std::regex_match(text, m, pattern))
+        throw Error("--resize-at must look like FRAME:WxH, got \"" + text + "\"");
+    ImageSize size = parseSizeOption(m[2], "--resize-at");
+    return {uint32_t(std::stoul(m[1])), size.width, size.height};
+}
+
+} // namespace
+
+bool parseViewOptions(int argc, char **argv, ViewOptions &options, int &exitCode) {
+    CLI::App app{"prism-view: flies through a .scene file in a window, ray traced by Prism's "
+                 "Vulkan compute tracer. While the camera is still, samples accumulate."};
+    app.set_version_flag("--version", "prism-view 0.1.0");
+    std::string scene, size = "1024x768", grid = "auto", vsync = "on", screenshot;
+    std::vector<std::string> resizes;
+    app.add_option("SCENE", scene, "Scene file (format: docs/scene-format.md)")->required();
+    app.add_option("--size", size, "Window size WxH (the traced image follows the window)")
+        ->default_val("1024x768");
+    app.add_option("--spp", options.samplesPerPixel,
+                   "Samples per pixel to converge to while the camera is still (one per frame; "
+                   "the same strata as prism-render --spp N)")
+        ->check(CLI::Range(1u, 65536u))
+        ->default_val(options.samplesPerPixel);
+    app.add_option("--depth", options.maxDepth,
+                   "Maximum ray depth: 1 = primary and shadow rays only")
+        ->check(CLI::Range(1u, 16u))
+        ->default_val(5);
+    app.add_option("--grid", grid,
+                   "Grid resolution: auto, off (test every primitive), N (N^3 cells) or NxNyNz")
+        ->default_val("auto");
+    app.add_option("--vsync", vsync,
+                   "on: wait for the display (FIFO); off: mailbox or immediate where the device "
+                   "has one")
+        ->check(CLI::IsMember({"on", "off"}))
+        ->default_val("on");
+    app.add_option("--benchmark", options.benchmarkFrames,
+                   "Fly a fixed camera path for N frames without input (vsync off), print one "
+                   "JSON line of frame times and Mrays/s, exit")
+        ->check(CLI::Range(1u, 1000000u));
+    app.add_flag("--validation", options.validation,
+                 "Enable Vulkan validation layers (also PRISM_VALIDATION=1); any message makes "
+                 "the exit status 1");
+    app.add_option("--device", options.deviceFilter,
+                   "Use the first Vulkan device whose name contains this text");
+    // For tests and soak runs; not in --help.
+    app.add_option("--script-frames", options.scriptFrames)->group("");
+    app.add_option("--resize-at", resizes)->group("");
+    app.add_option("--screenshot", screenshot)->group("");
+    app.add_flag("--script-orbit", options.scriptOrbit)->group("");
+    app.add_option("--report-every", options.reportEvery)->group("");
+    std::string reload;
+    app.add_option("--script-reload", reload)->group("");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError &e) {
+        exitCode = app.exit(e);
+        return false;
+    }
+    options.scenePath = scene;
+    ImageSize parsed = parseSizeOption(size);
+    options.width = parsed.width;
+    options.height = parsed.height;
+    options.grid = parseGridOption(grid);
+    options.vsync = vsync == "on" && options.benchmarkFrames == 0;
+    for (const std::string &text : resizes)
+        options.resizes.push_back(parseResize(text));
+    options.screenshotPath = screenshot;
+    if (!reload.empty()) {
+        size_t colon = reload.find(':');
+        if (colon == std::string::npos || colon == 0 ||
+            reload.find_first_not_of("0123456789") != colon)
+            throw Error("--script-reload must look like FRAME:PATH, got \"" + reload + "\"");
+        options.reloadFrame = uint32_t(std::stoul(reload.substr(0, colon)));
+        options.reloadPath = reload.substr(colon + 1);
+    }
+    if (!screenshot.empty() && options.scriptFrames == 0)
+        throw Error("--screenshot is written at the end of a scripted run (--script-frames N)");
+#ifdef PRISM_DEFAULT_VALIDATION
+    options.validation = true;
+#endif
+    if (const char *env = std::getenv("PRISM_VALIDATION"); env && std::string(env) == "1")
+        options.validation = true;
+    for (int i = 0; i < argc; ++i)
+        options.commandLine += (i ? " " : "") + std::string(argv[i]);
+    return true;
+}
+
+} // namespace prism

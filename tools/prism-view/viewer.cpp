@@ -1,0 +1,467 @@
+#include "viewer.h"
+
+#include <cstdio>
+#include <fstream>
+#include <unistd.h>
+
+#include <GLFW/glfw3.h>
+
+#include "core/error.h"
+#include "core/timer.h"
+#include "render_metadata.h"
+#include "screenshot.h"
+#include "vk/vk_check.h"
+
+namespace prism {
+namespace {
+
+constexpr uint32_t kFramesInFlight = 2;
+constexpr uint32_t kBenchmarkWarmupFrames = 5;
+
+std::unique_ptr<vk::Context> makeContext(const ViewOptions &options) {
+    vk::ContextOptions contextOptions;
+    contextOptions.validation = options.validation;
+    contextOptions.deviceNameFilter = options.deviceFilter;
+    contextOptions.instanceExtensions = GlfwSession::requiredInstanceExtensions();
+    contextOptions.deviceExtensions = {VK_KHR_SWAPCHAIN_EXTENSION_NAME};
+    return std::make_unique<vk::Context>(contextOptions);
+}
+
+std::string windowTitle(const std::filesystem::path &scene) {
+    return "prism-view - " + scene.filename().string();
+}
+
+// Resident set size in KiB, from /proc (the soak test watches it).
+long residentKiB() {
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return resident * (sysconf(_SC_PAGESIZE) / 1024);
+}
+
+FrameResult minus(const FrameResult &a, const FrameResult &b) {
+    FrameResult d;
+    d.rays.primary = a.rays.primary - b.rays.primary;
+    d.rays.shadow = a.rays.shadow - b.rays.shadow;
+    d.rays.secondary = a.rays.secondary - b.rays.secondary;
+    d.overBudgetPixels = a.overBudgetPixels - b.overBudgetPixels;
+    return d;
+}
+
+} // namespace
+
+Viewer::Viewer(const ViewOptions &options)
+    : options_(options), window_(options.width, options.height, windowTitle(options.scenePath)),
+      context_(makeContext(options)), source_(options.scenePath), fly_(Camera{}, 1.0f) {
+    surface_ = window_.createSurface(context_->instance());
+    VkExtent2D size = window_.framebufferSize();
+    vk::SwapchainOptions swapchainOptions{size, options_.vsync, VK_NULL_HANDLE};
+    swapchain_ = std::make_unique<vk::Swapchain>(*context_, surface_.handle(), swapchainOptions);
+    present_ = std::make_unique<PresentPass>(*context_, *swapchain_);
+    frames_ = std::make_unique<vk::FramesInFlight>(*context_, kFramesInFlight);
+    for (uint32_t i = 0; i < kFramesInFlight; ++i)
+        counterSnapshots_.emplace_back(*context_, RayTracer::counterBytes(),
+                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    slots_.resize(kFramesInFlight);
+    overlay_ =
+        std::make_unique<Overlay>(window_, *context_, present_->renderPass(), kFramesInFlight);
+
+    Scene scene = source_.load(); // at start a broken scene is fatal: there is nothing to show
+    for (const std::string &warning : scene.warnings)
+        std::fprintf(stderr, "%s\n", warning.c_str());
+    buildTracer(scene);
+    fly_ = FlyCamera(scene_.camera, flySpeedFor(scene_, grid_.boundsMin, grid_.boundsMax));
+    tracedCamera_ = scene_.camera;
+}
+
+Viewer::~Viewer() {
+    if (context_)
+        vkDeviceWaitIdle(context_->device());
+}
+
+void Viewer::buildTracer(const Scene &scene) {
+    GridOptions gridOptions = options_.grid;
+    if (!toggles_.grid)
+        gridOptions.mode = GridOptions::Mode::Off;
+    Timer buildTimer;
+    Grid grid = buildGrid(scene, gridOptions);
+    double buildMs = buildTimer.elapsedMs();
+    TracerOptions tracerOptions;
+    tracerOptions.maxDepth = options_.maxDepth;
+    tracerOptions.shadows = toggles_.shadows;
+    tracerOptions.reflection = toggles_.reflection;
+    tracerOptions.transmission = toggles_.refraction;
+    VkExtent2D extent = swapchain_->extent();
+    // Built before the old one goes, so a failure leaves the last good scene on screen.
+    auto tracer = std::make_unique<RayTracer>(*context_, scene, grid, extent.width, extent.height,
+                                              tracerOptions);
+    drainFrames();
+    tracer_ = std::move(tracer);
+    scene_ = scene;
+    grid_ = std::move(grid);
+    gridBuildMs_ = buildMs;
+    present_->setSource(tracer_->accumulation());
+    resetCounters_ = true;
+    lastCounters_ = {};
+    accumulationBase_ = {};
+    samples_ = 0;
+}
+
+void Viewer::reloadScene() {
+    try {
+        Scene scene = source_.load();
+        buildTracer(scene);
+        sceneError_.clear();
+        notice_ = "reloaded " + source_.path().filename().string();
+        std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
+    } catch (const Error &e) {
+        sceneError_ = e.what();
+        std::fprintf(stderr, "%s\n", e.what());
+    }
+}
+
+void Viewer::drainFrames() {
+    vkDeviceWaitIdle(context_->device());
+    // Slots complete in submission order; the current one is the oldest.
+    for (uint32_t i = 0; i < kFramesInFlight; ++i)
+        completeSlot((frames_->current() + i) % kFramesInFlight);
+}
+
+void Viewer::completeSlot(uint32_t slot) {
+    SlotRecord &record = slots_[slot];
+    if (!record.submitted)
+        return;
+    FrameResult counters = RayTracer::decodeCounters(counterSnapshots_[slot].mapped());
+    if (record.restart)
+        accumulationBase_ = lastCounters_;
+    uint64_t rays = counters.rays.total() - lastCounters_.rays.total();
+    stats_.addRays(rays);
+    if (record.measured)
+        benchmarkRays_ += rays;
+    lastCounters_ = counters;
+    record = SlotRecord{};
+}
+
+void Viewer::recreateSwapchain() {
+    VkExtent2D size = window_.framebufferSize();
+    if (size.width == 0 || size.height == 0)
+        return; // minimised: wait until there is something to draw into
+    drainFrames();
+    vk::SwapchainOptions swapchainOptions{size, options_.vsync, swapchain_->handle()};
+    auto replacement =
+        std::make_unique<vk::Swapchain>(*context_, surface_.handle(), swapchainOptions);
+    swapchain_ = std::move(replacement); // the old one is retired, then destroyed
+    if (present_->resetSwapchain(*swapchain_))
+        overlay_->setRenderPass(present_->renderPass());
+    VkExtent2D extent = swapchain_->extent();
+    if (extent.width != tracer_->width() || extent.height != tracer_->height()) {
+        tracer_->resize(extent.width, extent.height);
+        samples_ = 0;
+    }
+    present_->setSource(tracer_->accumulation());
+    swapchainDirty_ = false;
+    if (options_.scriptFrames > 0) // the image test checks that its resizes happened
+        std::fprintf(stderr, "prism-view: swapchain %ux%u\n", extent.width, extent.height);
+}
+
+void Viewer::handleKeys(const std::vector<int> &keys) {
+    bool typing = overlay_->wantsKeyboard();
+    for (int key : keys) {
+        if (typing && key != GLFW_KEY_F5 && key != GLFW_KEY_F12)
+            continue;
+        switch (key) {
+        case GLFW_KEY_H:
+            overlayVisible_ = !overlayVisible_;
+            break;
+        case GLFW_KEY_R:
+            fly_.reset(scene_.camera);
+            break;
+        case GLFW_KEY_F5:
+            reloadScene();
+            break;
+        case GLFW_KEY_F12:
+            saveScreenshot(defaultScreenshotBase(options_.scenePath));
+            break;
+        case GLFW_KEY_ESCAPE:
+            glfwSetWindowShouldClose(window_.handle(), GLFW_TRUE);
+            break;
+        default:
+            break;
+        }
+    }
+}
+
+FlyInput Viewer::flyInput(double scroll) {
+    FlyInput input;
+    if (!overlay_->wantsKeyboard()) {
+        auto axis = [&](int plus, int minus) {
+            return float(window_.keyDown(plus)) - float(window_.keyDown(minus));
+        };
+        input.move = {axis(GLFW_KEY_D, GLFW_KEY_A), axis(GLFW_KEY_E, GLFW_KEY_Q),
+                      axis(GLFW_KEY_W, GLFW_KEY_S)};
+        input.fast = window_.keyDown(GLFW_KEY_LEFT_SHIFT) || window_.keyDown(GLFW_KEY_RIGHT_SHIFT);
+    }
+    double x = 0.0, y = 0.0;
+    window_.cursor(x, y);
+    bool down = window_.mouseDown(GLFW_MOUSE_BUTTON_LEFT);
+    if (down && !dragging_ && !overlay_->wantsMouse())
+        dragging_ = true; // a drag that starts on the overlay belongs to the overlay
+    else if (!down)
+        dragging_ = false;
+    if (dragging_)
+        input.turnPixels = {float(x - lastCursorX_), float(y - lastCursorY_)};
+    lastCursorX_ = x;
+    lastCursorY_ = y;
+    if (!overlay_->wantsMouse())
+        input.zoomSteps = float(scroll);
+    return input;
+}
+
+void Viewer::updateCamera(uint32_t frame, double seconds, double scroll) {
+    if (options_.benchmarkFrames > 0) {
+        uint32_t measured = frame < kBenchmarkWarmupFrames ? 0 : frame - kBenchmarkWarmupFrames;
+        fly_.reset(benchmarkCamera(scene_.camera, measured, options_.benchmarkFrames));
+    } else if (options_.scriptFrames > 0) {
+        // Scripted: no input. The soak run orbits; the image test holds the scene's camera.
+        if (options_.scriptOrbit)
+            fly_.reset(benchmarkCamera(scene_.camera, frame % 240, 240));
+    } else {
+        fly_.update(flyInput(scroll), seconds);
+    }
+    if (!sameCamera(fly_.camera(), tracedCamera_)) {
+        tracedCamera_ = fly_.camera();
+        samples_ = 0; // any change restarts the accumulation
+    }
+}
+
+bool Viewer::drawFrame(bool measured) {
+    frames_->waitCurrent();
+    uint32_t slot = frames_->current();
+    completeSlot(slot);
+
+    uint32_t imageIndex = 0;
+    VkResult acquired =
+        vkAcquireNextImageKHR(context_->device(), swapchain_->handle(), UINT64_MAX,
+                              frames_->imageAcquired(), VK_NULL_HANDLE, &imageIndex);
+    if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
+        swapchainDirty_ = true;
+        return false;
+    }
+    if (acquired != VK_SUBOPTIMAL_KHR)
+        VK_CHECK(acquired);
+
+    VkCommandBuffer commands = frames_->begin();
+    SlotRecord &record = slots_[slot];
+    record.submitted = true;
+    record.measured = measured;
+    if (resetCounters_) {
+        tracer_->recordResetCounters(commands);
+        resetCounters_ = false;
+    }
+    bool traced = samples_ < options_.samplesPerPixel;
+    if (traced) {
+        record.restart = samples_ == 0;
+        // Sample s of N: the same stratum and random numbers prism-render --spp N uses.
+        tracer_->recordSamples(commands, tracedCamera_, samples_, 1, options_.samplesPerPixel);
+        samples_ += 1;
+    }
+    tracer_->recordCounterSnapshot(commands, counterSnapshots_[slot].handle());
+    present_->record(commands, imageIndex, [&](VkCommandBuffer c) { overlay_->record(c); });
+    VkSemaphore renderDone = swapchain_->renderDone(imageIndex);
+    frames_->submit(renderDone);
+
+    VkSwapchainKHR swapchain = swapchain_->handle();
+    VkPresentInfoKHR presentInfo{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+    presentInfo.waitSemaphoreCount = 1;
+    presentInfo.pWaitSemaphores = &renderDone;
+    presentInfo.swapchainCount = 1;
+    presentInfo.pSwapchains = &swapchain;
+    presentInfo.pImageIndices = &imageIndex;
+    VkResult presented = vkQueuePresentKHR(context_->queue(), &presentInfo);
+    if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||
+        acquired == VK_SUBOPTIMAL_KHR)
+        swapchainDirty_ = true;
+    else
+        VK_CHECK(presented);
+    return traced;
+}
+
+void Viewer::saveScreenshot(const std::filesystem::path &base) {
+    drainFrames();
+    if (samples_ == 0) {
+        notice_ = "nothing traced yet; no screenshot";
+        return;
+    }
+    FrameResult accumulation = minus(lastCounters_, accumulationBase_);
+    if (accumulation.overBudgetPixels > 0) {
+        notice_ = std::to_string(accumulation.overBudgetPixels) +
+                  " pixels over the loop budget; screenshot not saved";
+        std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
+        return;
+    }
+    RenderRecord record;
+    record.commandLine = options_.commandLine;
+    record.scenePath = options_.scenePath.string();
+    record.device = context_->deviceName();
+    record.backend = "vulkan";
+    record.gridResolution = resolutionText(grid_.resolution);
+    record.rays = accumulation.rays;
+    record.renderTimeMs = accumulationMs_;
+    record.renderTimeMedianMs = accumulationMs_;
+    record.gridBuildMs = gridBuildMs_;
+    record.mraysPerSecond =
+        accumulationMs_ > 0.0 ? double(accumulation.rays.total()) / (accumulationMs_ * 1e3) : 0.0;
+    record.samplesPerPixel = samples_;
+    record.maxDepth = options_.maxDepth;
+    try {
+        auto path = writeScreenshot(base, tracer_->readback(samples_), record);
+        notice_ = "saved " + path.filename().replace_extension(".exr/.png").string();
+        std::fprintf(stderr, "prism-view: saved %s (%u samples per pixel)\n", path.string().c_str(),
+                     samples_);
+    } catch (const Error &e) {
+        notice_ = std::string("screenshot failed: ") + e.what();
+        std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
+    }
+}
+
+OverlayStats Viewer::overlayStats() const {
+    OverlayStats s;
+    s.fps = stats_.fps();
+    s.msPerFrame = stats_.msPerFrame();
+    s.mraysPerSecond = samples_ >= options_.samplesPerPixel ? 0.0 : stats_.mraysPerSecond();
+    s.samples = samples_;
+    s.samplesTarget = options_.samplesPerPixel;
+    s.grid = toggles_.grid ? resolutionText(grid_.resolution) : "off (1 cell)";
+    s.device = context_->deviceName();
+    s.presentMode = vk::presentModeName(swapchain_->presentMode());
+    s.width = tracer_->width();
+    s.height = tracer_->height();
+    s.scene = options_.scenePath.filename().string();
+    s.sceneError = sceneError_;
+    s.overBudgetPixels = minus(lastCounters_, accumulationBase_).overBudgetPixels;
+    s.notice = notice_;
+    return s;
+}
+
+bool Viewer::scriptDone(uint32_t frame) const {
+    if (options_.benchmarkFrames > 0)
+        return frame >= kBenchmarkWarmupFrames + options_.benchmarkFrames;
+    if (options_.scriptFrames == 0)
+        return false;
+    if (frame < options_.scriptFrames)
+        return false;
+    // A screenshot waits for a converged accumulation (a resize late in the script restarts
+    // it), but not forever.
+    bool converged = samples_ >= options_.samplesPerPixel && !swapchainDirty_;
+    uint32_t patience = options_.scriptFrames + 2 * options_.samplesPerPixel + 120;
+    if (options_.screenshotPath.empty() || converged)
+        return true;
+    if (frame >= patience)
+        throw Error("the scripted run did not converge to " +
+                    std::to_string(options_.samplesPerPixel) + " samples in " +
+                    std::to_string(frame) + " frames");
+    return false;
+}
+
+int Viewer::run() {
+    bool interactive = options_.benchmarkFrames == 0 && options_.scriptFrames == 0;
+    BenchmarkReport report;
+    Timer frameTimer, benchmarkTimer;
+    std::vector<double> frameStarts;
+    long startRss = residentKiB();
+    uint32_t frame = 0;
+    while (!window_.shouldClose()) {
+        bool idle = samples_ >= options_.samplesPerPixel;
+        if (interactive && idle)
+            glfwWaitEventsTimeout(0.1); // converged: nothing to trace until something happens
+        else
+            glfwPollEvents();
+        WindowEvents events = window_.takeEvents();
+        double frameMs = frameTimer.elapsedMs();
+        frameTimer.reset();
+
+        for (const ScriptedResize &resize : options_.resizes)
+            if (resize.frame == frame)
+                window_.requestSize(resize.width, resize.height);
+        VkExtent2D size = window_.framebufferSize();
+        if (size.width == 0 || size.height == 0) {
+            glfwWaitEvents(); // minimised
+            continue;
+        }
+        // The window's size is asked for every frame: resize events may come late or merged.
+        if (swapchainDirty_ || size.width != swapchain_->extent().width ||
+            size.height != swapchain_->extent().height)
+            recreateSwapchain();
+
+        if (interactive) {
+            handleKeys(events.keysPressed);
+            if (source_.changedOnDisk())
+                reloadScene();
+        } else if (!options_.reloadPath.empty() && frame == options_.reloadFrame) {
+            source_ = SceneSource(options_.reloadPath);
+            reloadScene();
+        }
+        updateCamera(frame, frameMs / 1000.0, events.scrollY);
+
+        FeatureToggles wanted = toggles_;
+        if (overlay_->build(overlayStats(), wanted, overlayVisible_)) {
+            FeatureToggles previous = toggles_;
+            toggles_ = wanted;
+            try {
+                buildTracer(scene_);
+            } catch (const Error &e) {
+                toggles_ = previous;
+                notice_ = e.what();
+            }
+        }
+
+        bool measured = options_.benchmarkFrames > 0 && frame >= kBenchmarkWarmupFrames;
+        if (measured)
+            frameStarts.push_back(benchmarkTimer.elapsedMs());
+        if (measured && frameStarts.size() == 1)
+            report.warmupMs = frameStarts.front();
+        if (samples_ == 0)
+            accumulationMs_ = 0.0;
+        bool traced = drawFrame(measured);
+        if (traced) {
+            stats_.addFrame(frameMs);
+            accumulationMs_ += frameMs;
+        }
+        if (options_.reportEvery > 0 && frame % options_.reportEvery == 0)
+            std::fprintf(stderr, "prism-view: frame %u rss_kib %ld\n", frame, residentKiB());
+        frame += 1;
+        if (scriptDone(frame))
+            break;
+    }
+    drainFrames();
+
+    if (options_.benchmarkFrames > 0) {
+        frameStarts.push_back(benchmarkTimer.elapsedMs());
+        for (size_t i = 0; i + 1 < frameStarts.size(); ++i)
+            report.frameMs.push_back(frameStarts[i + 1] - frameStarts[i]);
+        report.scene = options_.scenePath.string();
+        report.device = context_->deviceName();
+        report.presentMode = vk::presentModeName(swapchain_->presentMode());
+        report.grid = resolutionText(grid_.resolution);
+        report.width = tracer_->width();
+        report.height = tracer_->height();
+        report.depth = options_.maxDepth;
+        report.warmupFrames = kBenchmarkWarmupFrames;
+        report.rays = benchmarkRays_;
+        std::printf("%s\n", benchmarkJson(report).c_str());
+        std::fflush(stdout);
+    }
+    if (!options_.screenshotPath.empty())
+        saveScreenshot(options_.screenshotPath);
+    if (options_.reportEvery > 0)
+        std::fprintf(stderr, "prism-view: frames %u rss_kib start %ld end %ld\n", frame, startRss,
+                     residentKiB());
+    if (context_->validationMessageCount() > 0) {
+        std::fprintf(stderr, "prism-view: %u Vulkan validation messages (printed above)\n",
+                     context_->validationMessageCount());
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace prism

@@ -1,0 +1,98 @@
+#pragma once
+// The viewer's frame loop: window, swapchain and frames in flight around one RayTracer, the
+// fly camera, progressive accumulation, the overlay, screenshots and scene reloading.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "accel/grid.h"
+#include "benchmark.h"
+#include "fly_camera.h"
+#include "frame_stats.h"
+#include "overlay.h"
+#include "present/present_pass.h"
+#include "render/ray_tracer.h"
+#include "scene_source.h"
+#include "view_options.h"
+#include "vk/buffer.h"
+#include "vk/context.h"
+#include "vk/frames_in_flight.h"
+#include "vk/surface.h"
+#include "vk/swapchain.h"
+#include "window.h"
+
+namespace prism {
+
+class Viewer {
+public:
+    // Opens the window and loads the scene; throws prism::Error (FileError for the scene)
+    // with a message saying what is missing or wrong.
+    explicit Viewer(const ViewOptions &options);
+    ~Viewer();
+    Viewer(const Viewer &) = delete;
+    Viewer &operator=(const Viewer &) = delete;
+
+    // Runs until the window closes, the script ends or the benchmark is done. Returns the exit
+    // status: 1 when validation messages appeared.
+    int run();
+
+private:
+    // What a submitted frame did, read back when its slot comes round again.
+    struct SlotRecord {
+        bool submitted = false;
+        bool restart = false;  // traced sample 0 of a new accumulation
+        bool measured = false; // a benchmark frame
+    };
+
+    void buildTracer(const Scene &scene);
+    void reloadScene();
+    void recreateSwapchain();
+    void drainFrames();
+    void completeSlot(uint32_t slot);
+    void handleKeys(const std::vector<int> &keys);
+    FlyInput flyInput(double scroll);
+    void updateCamera(uint32_t frame, double seconds, double scroll);
+    bool drawFrame(bool measured);
+    void saveScreenshot(const std::filesystem::path &base);
+    OverlayStats overlayStats() const;
+    bool scriptDone(uint32_t frame) const;
+
+    ViewOptions options_;
+    GlfwSession glfw_;
+    Window window_;
+    std::unique_ptr<vk::Context> context_;
+    vk::Surface surface_;
+    std::unique_ptr<vk::Swapchain> swapchain_;
+    std::unique_ptr<PresentPass> present_;
+    std::unique_ptr<vk::FramesInFlight> frames_;
+    std::vector<vk::Buffer> counterSnapshots_; // one per slot, host-visible
+    std::vector<SlotRecord> slots_;
+    std::unique_ptr<Overlay> overlay_;
+
+    SceneSource source_;
+    Scene scene_;
+    Grid grid_;
+    double gridBuildMs_ = 0.0;
+    FeatureToggles toggles_;
+    std::unique_ptr<RayTracer> tracer_;
+    bool resetCounters_ = true;
+
+    FlyCamera fly_;
+    Camera tracedCamera_;
+    uint32_t samples_ = 0; // in the accumulation image
+    bool swapchainDirty_ = false;
+    bool overlayVisible_ = true;
+    bool dragging_ = false;
+    double lastCursorX_ = 0.0, lastCursorY_ = 0.0;
+
+    // Ray counts, from the counter snapshots of completed frames.
+    FrameResult lastCounters_;     // cumulative, as of the last completed frame
+    FrameResult accumulationBase_; // cumulative when the current accumulation started
+    uint64_t benchmarkRays_ = 0;
+    double accumulationMs_ = 0.0; // wall clock of the frames that traced it
+    FrameStats stats_;
+    std::string sceneError_, notice_;
+};
+
+} // namespace prism
