@@ -5,7 +5,8 @@ packages=(
     build-essential cmake pkg-config
     libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
     libglfw3-dev libglm-dev libtinyobjloader-dev libopenimageio-dev openimageio-tools
-    libgtest-dev libcli11-dev nlohmann-json3-dev libimgui-dev xvfb
+    libgtest-dev libcli11-dev nlohmann-json3-dev libimgui-dev xvfb xauth
+    # xauth: xvfb-run (the prism-view tests) needs it; xvfb only recommends it
 )
 missing=()
 for p in "${packages[@]}"; do
