@@ -16,6 +16,9 @@ layout(constant_id = 9) const bool WRITE_AOV = false;
 // 65,535 loop iterations without telling anyone; we stop first and report it.
 layout(constant_id = 10) const uint LOOP_BUDGET = 0u;
 layout(constant_id = 11) const uint STACK_SIZE = 9u; // 2 * maxDepth - 1
+// Read the hot arrays (cells, spheres, triangle vertices) through uniform texel buffers instead
+// of storage buffers; the host binds the same buffers both ways (docs/benchmarks.md).
+layout(constant_id = 12) const bool TEXEL_BUFFERS = false;
 
 layout(set = 0, binding = 0, rgba32f) uniform image2D accumImage;     // sum of sample radiance
 layout(set = 0, binding = 1, rgba32f) uniform writeonly image2D aovImage; // xyz normal, w depth
@@ -30,7 +33,32 @@ layout(std430, set = 0, binding = 9) readonly buffer CellStartBuffer { uint cell
 layout(std430, set = 0, binding = 10) readonly buffer CellPrimitiveBuffer { uint cellPrimitives[]; };
 layout(std430, set = 0, binding = 11) readonly buffer TextureBuffer { GpuTexture textures[]; };
 layout(std430, set = 0, binding = 12) readonly buffer TexelBuffer { vec4 texels[]; };
+layout(set = 0, binding = 14) uniform usamplerBuffer cellStartTexels;
+layout(set = 0, binding = 15) uniform usamplerBuffer cellPrimitiveTexels;
+layout(set = 0, binding = 16) uniform samplerBuffer sphereTexels;   // 2 texels per GpuSphere
+layout(set = 0, binding = 17) uniform samplerBuffer triangleTexels; // 3 texels per GpuTriangle
+layout(set = 0, binding = 18) uniform samplerBuffer imageTexels;    // the texture texels
 // GpuStats viewed as 64-bit counters: 0 primary, 2 shadow, 4 secondary, 6 over-budget pixels.
 layout(std430, set = 0, binding = 13) buffer StatsBuffer { uint64_t counters[8]; };
 
 layout(push_constant) uniform FrameBlock { GpuFrameParams frame; };
+
+// The traversal's reads, through whichever binding TEXEL_BUFFERS selects.
+uint cellStartAt(uint i) {
+    return TEXEL_BUFFERS ? texelFetch(cellStartTexels, int(i)).x : cellStart[i];
+}
+uint cellPrimitiveAt(uint k) {
+    return TEXEL_BUFFERS ? texelFetch(cellPrimitiveTexels, int(k)).x : cellPrimitives[k];
+}
+vec4 sphereCenterRadius(uint i) {
+    return TEXEL_BUFFERS ? texelFetch(sphereTexels, int(2u * i)) : spheres[i].centerRadius;
+}
+vec3 triangleVertex(uint tri, uint corner) {
+    if (TEXEL_BUFFERS)
+        return texelFetch(triangleTexels, int(3u * tri + corner)).xyz;
+    return corner == 0u ? triangles[tri].v0.xyz
+                        : (corner == 1u ? triangles[tri].v1.xyz : triangles[tri].v2.xyz);
+}
+vec4 textureTexel(uint i) {
+    return TEXEL_BUFFERS ? texelFetch(imageTexels, int(i)) : texels[i];
+}

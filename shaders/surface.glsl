@@ -74,8 +74,8 @@ vec3 textureColor(uint textureIndex, vec2 uv) {
     int x1 = (x0 + 1) % w, y1 = (y0 + 1) % h;
     // Bottom-based rows map to stored rows h-1-y.
     uint rowA = uint(h - 1 - y0) * uint(w), rowB = uint(h - 1 - y1) * uint(w);
-    vec4 c00 = texels[info.x + rowA + uint(x0)], c10 = texels[info.x + rowA + uint(x1)];
-    vec4 c01 = texels[info.x + rowB + uint(x0)], c11 = texels[info.x + rowB + uint(x1)];
+    vec4 c00 = textureTexel(info.x + rowA + uint(x0)), c10 = textureTexel(info.x + rowA + uint(x1));
+    vec4 c01 = textureTexel(info.x + rowB + uint(x0)), c11 = textureTexel(info.x + rowB + uint(x1));
     return mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y).rgb;
 }
 

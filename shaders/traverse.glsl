@@ -15,7 +15,7 @@ void testPrimitive(uint id, vec3 origin, vec3 dir, WatertightRay wray, inout Hit
     float t;
     uint sphereCount = header.counts.x;
     if (HAS_SPHERES && id < sphereCount) {
-        if (intersectSphere(origin, dir, spheres[id].centerRadius, hit.t, t)) {
+        if (intersectSphere(origin, dir, sphereCenterRadius(id), hit.t, t)) {
             hit.t = t;
             hit.kind = kHitSphere;
             hit.index = id;
@@ -23,8 +23,8 @@ void testPrimitive(uint id, vec3 origin, vec3 dir, WatertightRay wray, inout Hit
     } else if (HAS_TRIANGLES) {
         uint tri = id - sphereCount;
         vec2 b12;
-        if (intersectTriangle(origin, wray, triangles[tri].v0.xyz, triangles[tri].v1.xyz,
-                              triangles[tri].v2.xyz, hit.t, t, b12)) {
+        if (intersectTriangle(origin, wray, triangleVertex(tri, 0u), triangleVertex(tri, 1u),
+                              triangleVertex(tri, 2u), hit.t, t, b12)) {
             hit.t = t;
             hit.kind = kHitTriangle;
             hit.index = tri;
@@ -107,10 +107,10 @@ bool traceClosest(vec3 origin, vec3 dir, float tMax, out Hit hit) {
                 if (!loopTick()) break;
                 float tCellExit = min(min(walk.tNext.x, walk.tNext.y), walk.tNext.z);
                 uint cell = cellIndex(walk.cell);
-                uint end = cellStart[cell + 1u];
-                for (uint k = cellStart[cell]; k < end; ++k) {
+                uint end = cellStartAt(cell + 1u);
+                for (uint k = cellStartAt(cell); k < end; ++k) {
                     if (!loopTick()) break;
-                    testPrimitive(cellPrimitives[k], origin, dir, wray, hit);
+                    testPrimitive(cellPrimitiveAt(k), origin, dir, wray, hit);
                 }
                 // Stop once the best hit lies in this cell (or a plane hit comes first).
                 walking = hit.t > tCellExit && tCellExit < tExit && stepWalk(walk) &&
@@ -147,10 +147,10 @@ bool traceOccluded(vec3 origin, vec3 dir, float tMax) {
                 if (!loopTick()) break;
                 float tCellExit = min(min(walk.tNext.x, walk.tNext.y), walk.tNext.z);
                 uint cell = cellIndex(walk.cell);
-                uint end = cellStart[cell + 1u];
-                for (uint k = cellStart[cell]; k < end && hit.kind == 0xFFFFFFFFu; ++k) {
+                uint end = cellStartAt(cell + 1u);
+                for (uint k = cellStartAt(cell); k < end && hit.kind == 0xFFFFFFFFu; ++k) {
                     if (!loopTick()) break;
-                    testPrimitive(cellPrimitives[k], origin, dir, wray, hit);
+                    testPrimitive(cellPrimitiveAt(k), origin, dir, wray, hit);
                 }
                 walking = hit.kind == 0xFFFFFFFFu && tCellExit < min(tExit, tMax) &&
                           stepWalk(walk) && !gOverBudget;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iterator>
 #include <string>
 
 #include "core/error.h"
@@ -21,7 +22,9 @@ constexpr uint32_t kLavapipeLoopBudget = 60000;
 constexpr VkDescriptorType kStorageImage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
 constexpr VkDescriptorType kStorageBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 
-template <typename T> size_t bytesOf(const std::vector<T> &v) { return v.size() * sizeof(T); }
+template <typename T> size_t bytesOf(const std::vector<T> &v) {
+    return v.size() * sizeof(T);
+}
 
 void imageBarrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
                   VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
@@ -39,7 +42,7 @@ void imageBarrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, V
 }
 
 uint64_t counterValue(const gpu::GpuStats &stats, int which) {
-    const glm::uvec4 &c = which == 0 ? stats.primary
+    const glm::uvec4 &c = which == 0   ? stats.primary
                           : which == 1 ? stats.shadow
                           : which == 2 ? stats.secondary
                                        : stats.budget;
@@ -54,6 +57,8 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     if (options.maxDepth < 1 || options.maxDepth > 64)
         throw Error("ray depth " + std::to_string(options.maxDepth) + " is outside 1..64");
     features_.maxDepth = options.maxDepth;
+    features_.texelBuffers = options.texelBuffers;
+    storageLimitOverride_ = options.storageBufferLimit;
     features_.writeAov = options.writeAov;
     features_.shadows = options.shadows;
     features_.reflection = features_.reflection && options.reflection;
@@ -61,28 +66,30 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     if (options.loopBudget >= 0)
         features_.loopBudget = uint32_t(options.loopBudget);
     else if (context.isLavapipe())
-        features_.loopBudget = invocationIterationBound(scene, grid, features_) < kLavapipeLoopBudget
-                                   ? 0u // provably within lavapipe's limit: no counting needed
-                                   : kLavapipeLoopBudget;
+        features_.loopBudget =
+            invocationIterationBound(scene, grid, features_) < kLavapipeLoopBudget
+                ? 0u // provably within lavapipe's limit: no counting needed
+                : kLavapipeLoopBudget;
     else
         features_.loopBudget = 0u;
 
     PackedScene packed = packScene(scene, grid);
     sceneBuffers_.push_back(upload(&packed.header, sizeof(packed.header), "scene header"));
-    sceneBuffers_.push_back(upload(packed.spheres.data(), bytesOf(packed.spheres), "sphere"));
+    sceneBuffers_.push_back(upload(packed.spheres.data(), bytesOf(packed.spheres), "sphere", 16));
     sceneBuffers_.push_back(upload(packed.planes.data(), bytesOf(packed.planes), "plane"));
     sceneBuffers_.push_back(
-        upload(packed.triangles.data(), bytesOf(packed.triangles), "triangle"));
-    sceneBuffers_.push_back(upload(packed.triangleShading.data(),
-                                   bytesOf(packed.triangleShading), "triangle shading"));
+        upload(packed.triangles.data(), bytesOf(packed.triangles), "triangle", 16));
+    sceneBuffers_.push_back(
+        upload(packed.triangleShading.data(), bytesOf(packed.triangleShading), "triangle shading"));
     sceneBuffers_.push_back(upload(packed.materials.data(), bytesOf(packed.materials), "material"));
     sceneBuffers_.push_back(upload(packed.lights.data(), bytesOf(packed.lights), "light"));
     sceneBuffers_.push_back(
-        upload(packed.cellStart.data(), bytesOf(packed.cellStart), "grid cell offset"));
+        upload(packed.cellStart.data(), bytesOf(packed.cellStart), "grid cell offset", 4));
     sceneBuffers_.push_back(upload(packed.cellPrimitives.data(), bytesOf(packed.cellPrimitives),
-                                   "grid cell primitive"));
+                                   "grid cell primitive", 4));
     sceneBuffers_.push_back(upload(packed.textures.data(), bytesOf(packed.textures), "texture"));
-    sceneBuffers_.push_back(upload(packed.texels.data(), bytesOf(packed.texels), "texel"));
+    sceneBuffers_.push_back(
+        upload(packed.texels.data(), bytesOf(packed.texels), "texture texel", 16));
     stats_ = vk::Buffer(context, sizeof(gpu::GpuStats),
                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                             VK_BUFFER_USAGE_TRANSFER_SRC_BIT, // snapshots for the viewer
@@ -100,13 +107,38 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     desc.bindings = {kStorageImage, kStorageImage};
     for (int i = 2; i <= 13; ++i)
         desc.bindings.push_back(kStorageBuffer);
+    for (int i = 14; i <= 18; ++i)
+        desc.bindings.push_back(VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
     desc.specialization = features_.specialization();
     desc.pushConstantBytes = sizeof(gpu::GpuFrameParams);
     pipeline_ = std::make_unique<vk::ComputePipeline>(context, desc);
     pipeline_->bindStorageImage(0, accum_.view());
     pipeline_->bindStorageImage(1, aov_.view());
+    // Both ways of reading the hot arrays are declared by the shader, so both are bound; the
+    // TEXEL_BUFFERS constant decides which one it reads. A storage binding never claims more
+    // than the device allows (in texel mode the array may be larger).
+    VkDeviceSize storageLimit = storageBufferLimit();
     for (uint32_t i = 0; i < sceneBuffers_.size(); ++i)
-        pipeline_->bindBuffer(2 + i, sceneBuffers_[i].handle());
+        pipeline_->bindBuffer(2 + i, sceneBuffers_[i].handle(),
+                              std::min(sceneBuffers_[i].size(), storageLimit));
+    struct TexelArray {
+        uint32_t buffer; // index into sceneBuffers_
+        VkFormat format;
+    };
+    const TexelArray texelArrays[] = {{7, VK_FORMAT_R32_UINT},
+                                      {8, VK_FORMAT_R32_UINT},
+                                      {1, VK_FORMAT_R32G32B32A32_SFLOAT},
+                                      {3, VK_FORMAT_R32G32B32A32_SFLOAT},
+                                      {10, VK_FORMAT_R32G32B32A32_SFLOAT}};
+    for (uint32_t i = 0; i < std::size(texelArrays); ++i) {
+        const vk::Buffer &buffer = sceneBuffers_[texelArrays[i].buffer];
+        VkDeviceSize texelSize = texelArrays[i].format == VK_FORMAT_R32_UINT ? 4 : 16;
+        texelViews_.emplace_back(
+            context, buffer.handle(), texelArrays[i].format,
+            std::min(buffer.size(),
+                     VkDeviceSize(context.properties().limits.maxTexelBufferElements) * texelSize));
+        pipeline_->bindTexelBuffer(14 + i, texelViews_.back().handle());
+    }
     pipeline_->bindBuffer(13, stats_.handle());
 }
 
@@ -123,8 +155,7 @@ void RayTracer::recordResetCounters(VkCommandBuffer commands) {
     fill.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     fill.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
     vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &fill, 0, nullptr, 0,
-                         nullptr);
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &fill, 0, nullptr, 0, nullptr);
 }
 
 void RayTracer::recordCounterSnapshot(VkCommandBuffer commands, VkBuffer target) const {
@@ -144,7 +175,9 @@ void RayTracer::recordCounterSnapshot(VkCommandBuffer commands, VkBuffer target)
                          &toHost, 0, nullptr, 0, nullptr);
 }
 
-VkDeviceSize RayTracer::counterBytes() { return sizeof(gpu::GpuStats); }
+VkDeviceSize RayTracer::counterBytes() {
+    return sizeof(gpu::GpuStats);
+}
 
 FrameResult RayTracer::decodeCounters(const void *snapshot) {
     gpu::GpuStats stats;
@@ -163,17 +196,33 @@ RayTracer::~RayTracer() {
         vkDestroyQueryPool(context_.device(), timestamps_, nullptr);
 }
 
-vk::Buffer RayTracer::upload(const void *data, size_t bytes, const char *what) {
-    VkDeviceSize limit = context_.properties().limits.maxStorageBufferRange;
-    if (bytes > limit)
+VkDeviceSize RayTracer::storageBufferLimit() const {
+    VkDeviceSize device = context_.properties().limits.maxStorageBufferRange;
+    return storageLimitOverride_ ? std::min(device, storageLimitOverride_) : device;
+}
+
+vk::Buffer RayTracer::upload(const void *data, size_t bytes, const char *what,
+                             VkDeviceSize texelBytes) {
+    const VkPhysicalDeviceLimits &limits = context_.properties().limits;
+    if (features_.texelBuffers && texelBytes != 0) {
+        uint64_t elements = bytes / texelBytes;
+        if (elements > limits.maxTexelBufferElements)
+            throw Error(std::string("scene too large for ") + context_.deviceName() + ": the " +
+                        what + " array has " + std::to_string(elements) +
+                        " texels but one texel buffer may hold at most " +
+                        std::to_string(limits.maxTexelBufferElements) +
+                        " (maxTexelBufferElements)");
+    } else if (bytes > storageBufferLimit()) {
         throw Error(std::string("scene too large for ") + context_.deviceName() + ": the " + what +
-                    " array needs " + std::to_string(bytes >> 20) +
-                    " MiB but one storage buffer may hold at most " +
-                    std::to_string(limit >> 20) + " MiB (maxStorageBufferRange)");
+                    " array needs " + std::to_string(bytes) +
+                    " bytes but one storage buffer may hold at most " +
+                    std::to_string(storageBufferLimit()) + " (maxStorageBufferRange)");
+    }
     // Vulkan has no empty buffers; unused arrays get one 16-byte element nobody reads.
     VkDeviceSize size = bytes == 0 ? 16 : bytes;
     vk::Buffer target(context_, size,
-                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                          (texelBytes ? VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : 0),
                       false);
     vk::Buffer staging(context_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
     std::memset(staging.mapped(), 0, size);
@@ -189,8 +238,8 @@ vk::Buffer RayTracer::upload(const void *data, size_t bytes, const char *what) {
 void RayTracer::createImages(uint32_t width, uint32_t height) {
     width_ = width;
     height_ = height;
-    VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                              VK_IMAGE_USAGE_SAMPLED_BIT;
+    VkImageUsageFlags usage =
+        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     accum_ = vk::Image(context_, width, height, VK_FORMAT_R32G32B32A32_SFLOAT, usage);
     // The AOV image is full size only when asked for: a scene pays for what it uses.
     bool aov = features_.writeAov;
@@ -242,18 +291,17 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
             toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
             toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
             vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                                 VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0,
-                                 nullptr);
+                                 VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
         });
         double hostMs = hostTimer.elapsedMs();
         uint64_t ticks[2] = {0, 0};
         VkResult queried =
             vkGetQueryPoolResults(context_.device(), timestamps_, 0, 2, sizeof(ticks), ticks,
                                   sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);
-        result.gpuMs += queried == VK_SUCCESS && ticks[1] > ticks[0]
-                            ? double(ticks[1] - ticks[0]) *
-                                  context_.properties().limits.timestampPeriod * 1e-6
-                            : hostMs;
+        result.gpuMs +=
+            queried == VK_SUCCESS && ticks[1] > ticks[0]
+                ? double(ticks[1] - ticks[0]) * context_.properties().limits.timestampPeriod * 1e-6
+                : hostMs;
         done = end;
         if (progress)
             progress(double(done) / samplesPerPixel);

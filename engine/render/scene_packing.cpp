@@ -40,10 +40,10 @@ PackedScene packScene(const Scene &scene, const Grid &grid) {
         packed.triangles.push_back({glm::vec4(t.p[0], indexAsFloat(t.material)),
                                     glm::vec4(t.p[1], 0.0f), glm::vec4(t.p[2], 0.0f)});
         if (needShading)
-            packed.triangleShading.push_back(
-                {glm::vec4(t.n[0], t.hasNormals ? 1.0f : 0.0f),
-                 glm::vec4(t.n[1], t.hasUVs ? 1.0f : 0.0f), glm::vec4(t.n[2], 0.0f),
-                 glm::vec4(t.uv[0], t.uv[1]), glm::vec4(t.uv[2], 0.0f, 0.0f)});
+            packed.triangleShading.push_back({glm::vec4(t.n[0], t.hasNormals ? 1.0f : 0.0f),
+                                              glm::vec4(t.n[1], t.hasUVs ? 1.0f : 0.0f),
+                                              glm::vec4(t.n[2], 0.0f), glm::vec4(t.uv[0], t.uv[1]),
+                                              glm::vec4(t.uv[2], 0.0f, 0.0f)});
     }
 
     for (const Material &m : scene.materials)

@@ -24,9 +24,8 @@ TracerFeatures featuresOf(const Scene &scene) {
 
 std::vector<uint32_t> TracerFeatures::specialization() const {
     uint32_t stackSize = std::max(1u, 2u * maxDepth - 1u); // see pushRay in trace.comp
-    return {spheres,  planes,        triangles,  reflection, transmission,
-            textures, areaLights,    vertexNormals, shadows, writeAov,
-            loopBudget, stackSize};
+    return {spheres,       planes,  triangles, reflection, transmission, textures,    areaLights,
+            vertexNormals, shadows, writeAov,  loopBudget, stackSize,    texelBuffers};
 }
 
 } // namespace prism

@@ -21,6 +21,7 @@ struct TracerFeatures {
     bool writeAov = false;
     uint32_t loopBudget = 0; // 0: unlimited
     uint32_t maxDepth = 5;
+    bool texelBuffers = false; // hot arrays through uniform texel buffers
 
     // Constant ids 0.. in the order of shaders/bindings.glsl.
     std::vector<uint32_t> specialization() const;

@@ -74,7 +74,9 @@ ComputePipeline::ComputePipeline(const Context &context, const ComputePipelineDe
     }
 }
 
-ComputePipeline::~ComputePipeline() { destroy(); }
+ComputePipeline::~ComputePipeline() {
+    destroy();
+}
 
 void ComputePipeline::destroy() {
     if (pool_)
@@ -113,6 +115,16 @@ void ComputePipeline::bindStorageImage(uint32_t binding, VkImageView view) {
     write.descriptorCount = 1;
     write.descriptorType = types_.at(binding);
     write.pImageInfo = &info;
+    vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+}
+
+void ComputePipeline::bindTexelBuffer(uint32_t binding, VkBufferView view) {
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = set_;
+    write.dstBinding = binding;
+    write.descriptorCount = 1;
+    write.descriptorType = types_.at(binding);
+    write.pTexelBufferView = &view;
     vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
 }
 

@@ -13,8 +13,8 @@ class Context;
 
 struct ComputePipelineDesc {
     std::span<const uint32_t> spirv;
-    std::vector<VkDescriptorType> bindings;   // binding i has type bindings[i], count 1
-    std::vector<uint32_t> specialization;     // constant_id i = specialization[i]
+    std::vector<VkDescriptorType> bindings; // binding i has type bindings[i], count 1
+    std::vector<uint32_t> specialization;   // constant_id i = specialization[i]
     uint32_t pushConstantBytes = 0;
 };
 
@@ -27,6 +27,7 @@ public:
 
     void bindBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize size = VK_WHOLE_SIZE);
     void bindStorageImage(uint32_t binding, VkImageView view);
+    void bindTexelBuffer(uint32_t binding, VkBufferView view);
     // Binds pipeline and descriptor set on `commands`.
     void bind(VkCommandBuffer commands) const;
     VkPipelineLayout layout() const { return layout_; }

@@ -50,8 +50,8 @@ inline ImageDifference compareImages(const std::vector<float> &a, const std::vec
 // Pixels within `radius` of a place where the image changes by more than `contrast` between
 // neighbours: silhouettes and shadow edges, where a sub-pixel shift of geometry legitimately
 // changes a pixel. Flat regions (where acne and lost shadows would show) stay unmasked.
-inline std::vector<bool> edgeBand(const std::vector<float> &rgba, int width, int height,
-                                  int radius, float contrast) {
+inline std::vector<bool> edgeBand(const std::vector<float> &rgba, int width, int height, int radius,
+                                  float contrast) {
     auto at = [&](int x, int y, int c) { return rgba[(size_t(y) * width + x) * 4 + c]; };
     std::vector<bool> edge(size_t(width) * height, false);
     for (int y = 0; y < height; ++y)

@@ -42,7 +42,11 @@ TEST(TracerFeatures, FollowTheScene) {
     scene.materials[3].transmit = 0.0f;
     EXPECT_FALSE(featuresOf(scene).transmission);
     f.maxDepth = 5;
-    EXPECT_EQ(f.specialization().back(), 9u) << "stack holds 2 * depth - 1 rays";
+    f.texelBuffers = true;
+    std::vector<uint32_t> constants = f.specialization();
+    ASSERT_EQ(constants.size(), 13u); // constant_id 0..12 in shaders/bindings.glsl
+    EXPECT_EQ(constants[11], 9u) << "stack holds 2 * depth - 1 rays";
+    EXPECT_EQ(constants[12], 1u) << "texel-buffer reads";
 }
 
 TEST(FrameParams, FollowTheCameraModel) {

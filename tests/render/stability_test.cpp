@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
 #include "render/loop_bound.h"
@@ -213,6 +214,43 @@ TEST_F(Stability, LavapipeLoopCutIsAlwaysCaught) {
     }
     EXPECT_GT(checked.frame.overBudgetPixels, 0u);
     EXPECT_EQ(wrongAndUnreported, 0);
+}
+
+// Texel-buffer and storage-buffer reads of the same arrays must give the very same image.
+TEST_F(Stability, TexelAndStorageBufferReadsAgree) {
+    Scene scene = stabilityScene();
+    TracerOptions storage, texel;
+    storage.texelBuffers = false;
+    texel.texelBuffers = true;
+    GpuRender a = renderGpu(context(), scene, 48, 36, 1, 5, GridOptions{}, storage);
+    GpuRender b = renderGpu(context(), scene, 48, 36, 1, 5, GridOptions{}, texel);
+    EXPECT_EQ(a.image.rgba, b.image.rgba);
+    EXPECT_EQ(a.frame.rays.total(), b.frame.rays.total());
+}
+
+// An array larger than one storage buffer may hold is refused with a message naming it, never
+// truncated; through texel buffers (the default) the same array still fits. The device's real
+// limit (128 MiB on lavapipe) is lowered here so the test needs no huge scene.
+TEST_F(Stability, OversizedArraysAreRefusedByName) {
+    Scene scene = stabilityScene();
+    for (int i = 0; i < 100; ++i)
+        addOctahedron(scene, {float(i % 10) * 0.1f, 3.0f, -3.0f}, 0.05f, 1);
+    Grid grid = buildGrid(scene);
+    TracerOptions storage;
+    storage.texelBuffers = false;
+    storage.storageBufferLimit = 4096; // the triangle array holds 808 * 48 bytes
+    try {
+        RayTracer tracer(context(), scene, grid, 16, 12, storage);
+        ADD_FAILURE() << "an oversized triangle array was accepted";
+    } catch (const prism::Error &e) {
+        EXPECT_NE(std::string(e.what()).find("triangle array"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("maxStorageBufferRange"), std::string::npos);
+    }
+    TracerOptions texel = storage;
+    texel.texelBuffers = true;
+    GpuRender limited = renderGpu(context(), scene, 32, 24, 1, 5, GridOptions{}, texel);
+    GpuRender unlimited = renderGpu(context(), scene, 32, 24);
+    EXPECT_EQ(limited.image.rgba, unlimited.image.rgba);
 }
 
 // The static bound (render/loop_bound.h) compiles the counting out only where the limit cannot

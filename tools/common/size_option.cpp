@@ -8,7 +8,7 @@ namespace prism {
 
 ImageSize parseSizeOption(const std::string &text, const std::string &option) {
     std::smatch m;
-    static const std::regex pattern("([0-9]{1,5})x([0-9]{1,5})");
+    static const std::regex pattern("([0-9]{1,9})x([0-9]{1,9})");
     if (!std::regex_match(text, m, pattern))
         throw Error(option + " must look like 1024x768, got \"" + text + "\"");
     ImageSize size{uint32_t(std::stoul(m[1])), uint32_t(std::stoul(m[2]))};

@@ -32,12 +32,14 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.tracer.transmission = false;
         } else if (token == "no-shadows") {
             v.tracer.shadows = false;
+        } else if (token == "texel" || token == "storage") {
+            v.tracer.texelBuffers = token == "texel";
         } else if (token == "count-loops") {
             v.tracer.loopBudget = 60000;
         } else {
             throw Error("variant " + text + ": unknown part '" + token +
                         "' (use auto, off, grid=N|NxNyNz, density=L, no-reflection, "
-                        "no-refraction, no-shadows, count-loops; join with +)");
+                        "no-refraction, no-shadows, texel, storage, count-loops; join with +)");
         }
     }
     return v;

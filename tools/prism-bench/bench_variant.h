@@ -1,7 +1,7 @@
 #pragma once
 // One configuration of the tracer that a benchmark compares with others on the same scene:
 // a grid choice and switched-off features, written as e.g. "grid=20", "density=4",
-// "off", "no-shadows" or combinations joined by '+' ("grid=30+no-reflection").
+// "off", "no-shadows", "storage" or combinations joined by '+' ("grid=30+no-reflection").
 #include <string>
 
 #include "accel/grid.h"

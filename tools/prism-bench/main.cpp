@@ -83,9 +83,12 @@ int main(int argc, char **argv) {
     app.add_option("--runs", settings.runs, "Timed frames per variant")
         ->check(CLI::Range(1u, 1000u))
         ->default_val(5);
-    app.add_option("--variants", variantList,
-                   "Comma-separated variants: auto, off, grid=N|NxNyNz, density=L, "
-                   "no-reflection, no-refraction, no-shadows, count-loops; join parts with +")
+    app.add_option(
+           "--variants", variantList,
+           "Comma-separated variants: auto, off, grid=N|NxNyNz, density=L, "
+           "no-reflection, no-refraction, no-shadows, texel or storage (how the hot arrays are "
+           "read), count-loops; "
+           "join parts with +")
         ->default_val(variantList);
     app.add_option("--json", jsonPath, "Also write every result (all frame times) as JSON");
     app.add_option("--device", deviceFilter, "First Vulkan device whose name contains this");
