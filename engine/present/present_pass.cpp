@@ -39,6 +39,7 @@ void PresentPass::buildPipeline(const vk::Swapchain &swapchain) {
     desc.fragmentSpirv = std::span<const uint32_t>(kPresentFragSpv, sizeof(kPresentFragSpv) / 4);
     desc.bindings = {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
     desc.fragmentSpecialization = {swapchain.encodesSrgb() ? 0u : 1u};
+    desc.pushConstantBytes = 2 * sizeof(float); // image size / framebuffer size
     desc.renderPass = renderPass_->handle();
     pipeline_ = std::make_unique<vk::GraphicsPipeline>(context_, desc);
     source_ = VK_NULL_HANDLE; // a new descriptor set: bind the source again
@@ -60,6 +61,7 @@ void PresentPass::setSource(const vk::Image &accumulation) {
         throw Error("the present pass shows rgba32f accumulation images only");
     pipeline_->bindStorageImage(0, accumulation.view());
     source_ = accumulation.handle();
+    sourceExtent_ = {accumulation.width(), accumulation.height()};
 }
 
 void PresentPass::record(VkCommandBuffer commands, uint32_t imageIndex,
@@ -80,6 +82,10 @@ void PresentPass::record(VkCommandBuffer commands, uint32_t imageIndex,
     vkCmdSetViewport(commands, 0, 1, &viewport);
     vkCmdSetScissor(commands, 0, 1, &scissor);
     pipeline_->bind(commands);
+    float imagePerFragment[2] = {float(sourceExtent_.width) / float(extent_.width),
+                                 float(sourceExtent_.height) / float(extent_.height)};
+    vkCmdPushConstants(commands, pipeline_->layout(), VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(imagePerFragment), imagePerFragment);
     vkCmdDraw(commands, 3, 1, 0, 0);
     if (overlay)
         overlay(commands);

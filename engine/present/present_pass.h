@@ -2,7 +2,8 @@
 // Puts the tracer's accumulation image on a swapchain image without a trip through the host:
 // a fullscreen triangle whose fragment shader reads the storage image (still in GENERAL
 // layout, where the tracer left it), divides by the sample count, clamps and sRGB-encodes.
-// An overlay may draw into the same render pass after it.
+// A source smaller than the swapchain is magnified (nearest). An overlay may draw into the
+// same render pass after it.
 #include <functional>
 #include <memory>
 #include <vector>
@@ -44,6 +45,7 @@ private:
     std::vector<vk::Framebuffer> framebuffers_;
     VkExtent2D extent_{0, 0};
     VkImage source_ = VK_NULL_HANDLE;
+    VkExtent2D sourceExtent_{0, 0};
 };
 
 } // namespace prism

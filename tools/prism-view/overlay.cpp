@@ -95,7 +95,11 @@ bool Overlay::build(const OverlayStats &s, FeatureToggles &toggles, bool visible
         ImGui::Text("samples %u / %u%s", s.samples, s.samplesTarget,
                     s.samples >= s.samplesTarget ? " (converged)" : "");
         ImGui::Text("grid %s", s.grid.c_str());
-        ImGui::Text("%ux%u  %s", s.width, s.height, s.presentMode.c_str());
+        if (s.traceScale > 1)
+            ImGui::Text("%ux%u (1/%u while moving)  %s", s.width, s.height, s.traceScale,
+                        s.presentMode.c_str());
+        else
+            ImGui::Text("%ux%u  %s", s.width, s.height, s.presentMode.c_str());
         ImGui::TextUnformatted(s.device.c_str());
         ImGui::TextUnformatted(s.scene.c_str());
         ImGui::Separator();

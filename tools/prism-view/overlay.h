@@ -31,7 +31,8 @@ struct OverlayStats {
     std::string grid; // "48x12x40" or "off"
     std::string device;
     std::string presentMode;
-    uint32_t width = 0, height = 0;
+    uint32_t width = 0, height = 0; // traced image
+    uint32_t traceScale = 1;        // > 1: a moving camera's reduced image
     std::string scene;
     std::string sceneError; // FILE:LINE message of the last failed load, else empty
     uint64_t overBudgetPixels = 0;

@@ -43,11 +43,21 @@ bool parseViewOptions(int argc, char **argv, ViewOptions &options, int &exitCode
     app.add_option("--grid", grid,
                    "Grid resolution: auto, off (test every primitive), N (N^3 cells) or NxNyNz")
         ->default_val("auto");
+    float density = GridOptions{}.density;
+    app.add_option("--grid-density", density,
+                   "With --grid auto: target cells per primitive (docs/grid-density.md)")
+        ->check(CLI::Range(0.01f, 1000.0f))
+        ->default_val(density);
     app.add_option("--vsync", vsync,
                    "on: wait for the display (FIFO); off: mailbox or immediate where the device "
                    "has one")
         ->check(CLI::IsMember({"on", "off"}))
         ->default_val("on");
+    std::string motionScale = "auto";
+    app.add_option("--motion-scale", motionScale,
+                   "While the camera moves, trace at 1/N of the window size (auto: aim for ~20 "
+                   "FPS from the speed of still frames; 1: always full size)")
+        ->default_val("auto");
     app.add_option("--benchmark", options.benchmarkFrames,
                    "Fly a fixed camera path for N frames without input (vsync off), print one "
                    "JSON line of frame times and Mrays/s, exit")
@@ -76,7 +86,14 @@ bool parseViewOptions(int argc, char **argv, ViewOptions &options, int &exitCode
     options.width = parsed.width;
     options.height = parsed.height;
     options.grid = parseGridOption(grid);
+    options.grid.density = density;
     options.vsync = vsync == "on" && options.benchmarkFrames == 0;
+    if (motionScale != "auto") {
+        if (motionScale.empty() || motionScale.size() > 1 || motionScale[0] < '1' ||
+            motionScale[0] > '8')
+            throw Error("--motion-scale takes auto or 1..8, got \"" + motionScale + "\"");
+        options.motionScale = uint32_t(motionScale[0] - '0');
+    }
     for (const std::string &text : resizes)
         options.resizes.push_back(parseResize(text));
     options.screenshotPath = screenshot;

@@ -24,6 +24,9 @@ struct ViewOptions {
     uint32_t maxDepth = 5;
     GridOptions grid;
     bool vsync = true;
+    // While the camera moves, trace at 1/motionScale of the window's size in each axis (shown
+    // magnified); when it stops, at full size. 0 = auto: aim for ~20 frames per second.
+    uint32_t motionScale = 0;
     uint32_t benchmarkFrames = 0; // > 0: fly the benchmark path, print JSON, exit
     bool validation = false;
     std::string deviceFilter;

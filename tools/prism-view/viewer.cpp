@@ -1,5 +1,7 @@
 #include "viewer.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <unistd.h>
@@ -17,6 +19,11 @@ namespace {
 
 constexpr uint32_t kFramesInFlight = 2;
 constexpr uint32_t kBenchmarkWarmupFrames = 5;
+// A camera still for this long is "still": back to full size, accumulating. The pause keeps a
+// slow drag from switching sizes every frame.
+constexpr double kStillMs = 150.0;
+// --motion-scale auto aims a moving frame at this (about 20 FPS).
+constexpr double kMotionFrameMs = 50.0;
 
 std::unique_ptr<vk::Context> makeContext(const ViewOptions &options) {
     vk::ContextOptions contextOptions;
@@ -66,10 +73,12 @@ Viewer::Viewer(const ViewOptions &options)
     overlay_ =
         std::make_unique<Overlay>(window_, *context_, present_->renderPass(), kFramesInFlight);
 
+    toggles_.grid = options_.grid.mode != GridOptions::Mode::Off;
     Scene scene = source_.load(); // at start a broken scene is fatal: there is nothing to show
     for (const std::string &warning : scene.warnings)
         std::fprintf(stderr, "%s\n", warning.c_str());
     buildTracer(scene);
+    scene_ = std::move(scene);
     fly_ = FlyCamera(scene_.camera, flySpeedFor(scene_, grid_.boundsMin, grid_.boundsMax));
     tracedCamera_ = scene_.camera;
 }
@@ -83,6 +92,8 @@ void Viewer::buildTracer(const Scene &scene) {
     GridOptions gridOptions = options_.grid;
     if (!toggles_.grid)
         gridOptions.mode = GridOptions::Mode::Off;
+    else if (gridOptions.mode == GridOptions::Mode::Off)
+        gridOptions.mode = GridOptions::Mode::Auto; // --grid off, then switched on
     Timer buildTimer;
     Grid grid = buildGrid(scene, gridOptions);
     double buildMs = buildTimer.elapsedMs();
@@ -92,12 +103,12 @@ void Viewer::buildTracer(const Scene &scene) {
     tracerOptions.reflection = toggles_.reflection;
     tracerOptions.transmission = toggles_.refraction;
     VkExtent2D extent = swapchain_->extent();
+    uint32_t width = std::max(1u, extent.width / traceScale_);
+    uint32_t height = std::max(1u, extent.height / traceScale_);
     // Built before the old one goes, so a failure leaves the last good scene on screen.
-    auto tracer = std::make_unique<RayTracer>(*context_, scene, grid, extent.width, extent.height,
-                                              tracerOptions);
+    auto tracer = std::make_unique<RayTracer>(*context_, scene, grid, width, height, tracerOptions);
     drainFrames();
     tracer_ = std::move(tracer);
-    scene_ = scene;
     grid_ = std::move(grid);
     gridBuildMs_ = buildMs;
     present_->setSource(tracer_->accumulation());
@@ -111,6 +122,7 @@ void Viewer::reloadScene() {
     try {
         Scene scene = source_.load();
         buildTracer(scene);
+        scene_ = std::move(scene);
         sceneError_.clear();
         notice_ = "reloaded " + source_.path().filename().string();
         std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
@@ -153,15 +165,40 @@ void Viewer::recreateSwapchain() {
     swapchain_ = std::move(replacement); // the old one is retired, then destroyed
     if (present_->resetSwapchain(*swapchain_))
         overlay_->setRenderPass(present_->renderPass());
-    VkExtent2D extent = swapchain_->extent();
-    if (extent.width != tracer_->width() || extent.height != tracer_->height()) {
-        tracer_->resize(extent.width, extent.height);
-        samples_ = 0;
-    }
+    fitTracerToSwapchain();
     present_->setSource(tracer_->accumulation());
     swapchainDirty_ = false;
+    VkExtent2D extent = swapchain_->extent();
     if (options_.scriptFrames > 0) // the image test checks that its resizes happened
         std::fprintf(stderr, "prism-view: swapchain %ux%u\n", extent.width, extent.height);
+}
+
+void Viewer::fitTracerToSwapchain() {
+    VkExtent2D extent = swapchain_->extent();
+    uint32_t width = std::max(1u, extent.width / traceScale_);
+    uint32_t height = std::max(1u, extent.height / traceScale_);
+    if (width == tracer_->width() && height == tracer_->height())
+        return;
+    tracer_->resize(width, height); // waits for the device: no frame still reads the old image
+    present_->setSource(tracer_->accumulation());
+    samples_ = 0;
+}
+
+void Viewer::setTraceScale(uint32_t scale) {
+    if (scale == traceScale_)
+        return;
+    traceScale_ = scale;
+    fitTracerToSwapchain();
+}
+
+uint32_t Viewer::motionScale() const {
+    if (options_.motionScale > 0)
+        return options_.motionScale;
+    if (fullFrameMs_ <= kMotionFrameMs)
+        return 1;
+    // Cost goes with the pixel count: scale s divides it by s^2.
+    double scale = std::ceil(std::sqrt(fullFrameMs_ / kMotionFrameMs));
+    return uint32_t(std::min(scale, 8.0));
 }
 
 void Viewer::handleKeys(const std::vector<int> &keys) {
@@ -226,11 +263,19 @@ void Viewer::updateCamera(uint32_t frame, double seconds, double scroll) {
         if (options_.scriptOrbit)
             fly_.reset(benchmarkCamera(scene_.camera, frame % 240, 240));
     } else {
-        fly_.update(flyInput(scroll), seconds);
+        // A slow frame (a shader compile, a reload) must not turn into a long jump.
+        fly_.update(flyInput(scroll), std::min(seconds, 0.25));
     }
     if (!sameCamera(fly_.camera(), tracedCamera_)) {
         tracedCamera_ = fly_.camera();
         samples_ = 0; // any change restarts the accumulation
+        stillTimer_.reset();
+        if (!moving_ && interactiveRun())
+            setTraceScale(motionScale()); // chosen once per motion, so sizes do not flicker
+        moving_ = true;
+    } else if (moving_ && stillTimer_.elapsedMs() >= kStillMs) {
+        moving_ = false;
+        setTraceScale(1);
     }
 }
 
@@ -328,7 +373,7 @@ OverlayStats Viewer::overlayStats() const {
     OverlayStats s;
     s.fps = stats_.fps();
     s.msPerFrame = stats_.msPerFrame();
-    s.mraysPerSecond = samples_ >= options_.samplesPerPixel ? 0.0 : stats_.mraysPerSecond();
+    s.mraysPerSecond = stats_.mraysPerSecond(); // like FPS, the last rate while tracing
     s.samples = samples_;
     s.samplesTarget = options_.samplesPerPixel;
     s.grid = toggles_.grid ? resolutionText(grid_.resolution) : "off (1 cell)";
@@ -336,6 +381,7 @@ OverlayStats Viewer::overlayStats() const {
     s.presentMode = vk::presentModeName(swapchain_->presentMode());
     s.width = tracer_->width();
     s.height = tracer_->height();
+    s.traceScale = traceScale_;
     s.scene = options_.scenePath.filename().string();
     s.sceneError = sceneError_;
     s.overBudgetPixels = minus(lastCounters_, accumulationBase_).overBudgetPixels;
@@ -363,8 +409,12 @@ bool Viewer::scriptDone(uint32_t frame) const {
     return false;
 }
 
+bool Viewer::interactiveRun() const {
+    return options_.benchmarkFrames == 0 && options_.scriptFrames == 0;
+}
+
 int Viewer::run() {
-    bool interactive = options_.benchmarkFrames == 0 && options_.scriptFrames == 0;
+    bool interactive = interactiveRun();
     BenchmarkReport report;
     Timer frameTimer, benchmarkTimer;
     std::vector<double> frameStarts;
@@ -422,10 +472,13 @@ int Viewer::run() {
             report.warmupMs = frameStarts.front();
         if (samples_ == 0)
             accumulationMs_ = 0.0;
+        bool accumulating = traceScale_ == 1 && samples_ > 0; // not a first sample
         bool traced = drawFrame(measured);
         if (traced) {
             stats_.addFrame(frameMs);
             accumulationMs_ += frameMs;
+            if (accumulating)
+                fullFrameMs_ = frameMs;
         }
         if (options_.reportEvery > 0 && frame % options_.reportEvery == 0)
             std::fprintf(stderr, "prism-view: frame %u rss_kib %ld\n", frame, residentKiB());

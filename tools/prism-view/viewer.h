@@ -8,6 +8,7 @@
 
 #include "accel/grid.h"
 #include "benchmark.h"
+#include "core/timer.h"
 #include "fly_camera.h"
 #include "frame_stats.h"
 #include "overlay.h"
@@ -45,9 +46,14 @@ private:
         bool measured = false; // a benchmark frame
     };
 
+    // Grid and tracer for `scene` with the current toggles; on failure the old ones stay.
     void buildTracer(const Scene &scene);
     void reloadScene();
     void recreateSwapchain();
+    // Traces at 1/scale of the swapchain's size from now on (no-op when unchanged).
+    void setTraceScale(uint32_t scale);
+    void fitTracerToSwapchain();
+    uint32_t motionScale() const;
     void drainFrames();
     void completeSlot(uint32_t slot);
     void handleKeys(const std::vector<int> &keys);
@@ -57,6 +63,7 @@ private:
     void saveScreenshot(const std::filesystem::path &base);
     OverlayStats overlayStats() const;
     bool scriptDone(uint32_t frame) const;
+    bool interactiveRun() const; // no script, no benchmark: input drives the camera
 
     ViewOptions options_;
     GlfwSession glfw_;
@@ -81,6 +88,10 @@ private:
     FlyCamera fly_;
     Camera tracedCamera_;
     uint32_t samples_ = 0; // in the accumulation image
+    uint32_t traceScale_ = 1;
+    bool moving_ = false;      // the camera changed within the last kStillMs
+    Timer stillTimer_;         // since the camera last changed
+    double fullFrameMs_ = 0.0; // a recent full-size accumulation frame, for --motion-scale auto
     bool swapchainDirty_ = false;
     bool overlayVisible_ = true;
     bool dragging_ = false;

@@ -47,8 +47,11 @@ GlfwSession::~GlfwSession() {
 std::vector<const char *> GlfwSession::requiredInstanceExtensions() {
     uint32_t count = 0;
     const char **names = glfwGetRequiredInstanceExtensions(&count);
-    if (!names)
-        throw Error("the window system offers no Vulkan surface extensions: " + lastGlfwError());
+    if (!names) // the loader is there, but no driver can draw into windows
+        throw Error("no Vulkan driver is installed that can draw into a window (none offers "
+                    "VK_KHR_surface for this window system). On Debian 12 `sudo apt install "
+                    "mesa-vulkan-drivers` gives lavapipe (runs on the CPU); a GPU needs its "
+                    "vendor's Vulkan driver.");
     return std::vector<const char *>(names, names + count);
 }
 
