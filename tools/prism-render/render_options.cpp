@@ -20,8 +20,7 @@ void parseAovs(const std::string &text, RenderOptions &options) {
         else if (name == "normal")
             options.aovNormal = true;
         else
-            throw Error("--aov takes a comma-separated list of z and normal, got \"" + text +
-                        "\"");
+            throw Error("--aov takes a comma-separated list of z and normal, got \"" + text + "\"");
         if (comma == std::string::npos)
             break;
         start = comma + 1;
@@ -65,12 +64,14 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
         ->check(CLI::Range(0.01f, 1000.0f))
         ->default_val(density);
     app.add_option("--aov", aov, "Extra EXR channels: z (distance, Z), normal (N.X N.Y N.Z)");
-    app.add_option("--backend", backend, "vulkan (GPU or lavapipe) or cpu (double-precision "
-                                         "reference)")
+    app.add_option("--backend", backend,
+                   "vulkan (GPU or lavapipe) or cpu (double-precision "
+                   "reference)")
         ->check(CLI::IsMember({"vulkan", "cpu"}))
         ->default_val("vulkan");
-    app.add_option("--repeat", options.repeat,
-                   "Timed frames after one warm-up frame (trace_ms is the best)")
+    app.add_option(
+           "--repeat", options.repeat,
+           "Timed frames after one warm-up frame of 1 sample per pixel (trace_ms is the best)")
         ->check(CLI::Range(1u, 10000u))
         ->default_val(1);
     app.add_flag("--stats", options.stats, "Print one JSON line of timings and ray counts");

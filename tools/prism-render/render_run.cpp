@@ -11,8 +11,8 @@
 #include "io/image_writer.h"
 #include "progress_line.h"
 #include "reference/reference_renderer.h"
-#include "render_metadata.h"
 #include "render/ray_tracer.h"
+#include "render_metadata.h"
 #include "scene/scene_loader.h"
 #include "vk/context.h"
 
@@ -41,12 +41,14 @@ RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const G
     RenderOutcome out;
     out.device = context.deviceName();
     ProgressLine progress(!o.quiet);
-    // Frame 0 warms up (lavapipe compiles the shader inside the first dispatch).
+    // Frame 0 warms up: lavapipe compiles the shader inside the first dispatch, so it is not
+    // timed. One sample per pixel is enough for that and costs 1/spp of a frame.
     for (uint32_t frame = 0; frame <= o.repeat; ++frame) {
-        std::string label = frame == 0 ? "warm-up frame" : "frame " + std::to_string(frame) + "/" +
-                                                               std::to_string(o.repeat);
-        FrameResult result = tracer.renderFrame(
-            scene.camera, o.samplesPerPixel, [&](double f) { progress.update(label, f); });
+        std::string label = frame == 0
+                                ? "warm-up frame"
+                                : "frame " + std::to_string(frame) + "/" + std::to_string(o.repeat);
+        FrameResult result = tracer.renderFrame(scene.camera, frame == 0 ? 1u : o.samplesPerPixel,
+                                                [&](double f) { progress.update(label, f); });
         if (result.overBudgetPixels > 0)
             throw Error(std::to_string(result.overBudgetPixels) +
                         " pixels needed more shader loop iterations than " + out.device +
@@ -123,8 +125,8 @@ void runRender(const RenderOptions &o) {
     Grid grid = buildGrid(scene, o.grid);
     double buildMs = buildTimer.elapsedMs();
 
-    RenderOutcome out = o.backend == Backend::Cpu ? renderOnCpu(o, scene)
-                                                  : renderOnVulkan(o, scene, grid);
+    RenderOutcome out =
+        o.backend == Backend::Cpu ? renderOnCpu(o, scene) : renderOnVulkan(o, scene, grid);
     double bestMs = *std::min_element(out.frameMs.begin(), out.frameMs.end());
     double medianMs = median(out.frameMs);
     double mraysPerSecond = double(out.rays.total()) / (bestMs * 1e3);
@@ -147,26 +149,26 @@ void runRender(const RenderOptions &o) {
     writeImage(o.outputPath, out.image, meta);
 
     if (o.stats) {
-        nlohmann::json stats = {
-            {"scene", o.scenePath.string()},
-            {"backend", o.backend == Backend::Cpu ? "cpu" : "vulkan"},
-            {"device", out.device},
-            {"width", o.width},
-            {"height", o.height},
-            {"spp", o.samplesPerPixel},
-            {"depth", o.maxDepth},
-            {"primitives", scene.finitePrimitiveCount() + scene.planes.size()},
-            {"grid", resolutionText(grid.resolution)},
-            {"grid_max_per_cell", grid.maxPerCell},
-            {"load_ms", loadMs},
-            {"build_ms", buildMs},
-            {"trace_ms", bestMs},
-            {"trace_ms_median", medianMs},
-            {"frames", out.frameMs.size()},
-            {"rays", {{"primary", out.rays.primary},
-                      {"shadow", out.rays.shadow},
-                      {"secondary", out.rays.secondary}}},
-            {"mrays_per_s", mraysPerSecond}};
+        nlohmann::json stats = {{"scene", o.scenePath.string()},
+                                {"backend", o.backend == Backend::Cpu ? "cpu" : "vulkan"},
+                                {"device", out.device},
+                                {"width", o.width},
+                                {"height", o.height},
+                                {"spp", o.samplesPerPixel},
+                                {"depth", o.maxDepth},
+                                {"primitives", scene.finitePrimitiveCount() + scene.planes.size()},
+                                {"grid", resolutionText(grid.resolution)},
+                                {"grid_max_per_cell", grid.maxPerCell},
+                                {"load_ms", loadMs},
+                                {"build_ms", buildMs},
+                                {"trace_ms", bestMs},
+                                {"trace_ms_median", medianMs},
+                                {"frames", out.frameMs.size()},
+                                {"rays",
+                                 {{"primary", out.rays.primary},
+                                  {"shadow", out.rays.shadow},
+                                  {"secondary", out.rays.secondary}}},
+                                {"mrays_per_s", mraysPerSecond}};
         std::printf("%s\n", stats.dump().c_str());
     }
 }
