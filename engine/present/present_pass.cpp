@@ -3,27 +3,9 @@
 #include "core/error.h"
 #include "shaders/fullscreen.vert.spv.h"
 #include "shaders/present.frag.spv.h"
+#include "vk/barriers.h"
 
 namespace prism {
-namespace {
-
-void accumulationBarrier(VkCommandBuffer commands, VkImage image, VkPipelineStageFlags srcStage,
-                         VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
-                         VkAccessFlags dstAccess) {
-    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    barrier.srcAccessMask = srcAccess;
-    barrier.dstAccessMask = dstAccess;
-    barrier.oldLayout = VK_IMAGE_LAYOUT_GENERAL;
-    barrier.newLayout = VK_IMAGE_LAYOUT_GENERAL;
-    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.image = image;
-    barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(commands, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
-}
-
-} // namespace
-
 PresentPass::PresentPass(const vk::Context &context, const vk::Swapchain &swapchain)
     : context_(context) {
     resetSwapchain(swapchain);
@@ -68,9 +50,9 @@ void PresentPass::record(VkCommandBuffer commands, uint32_t imageIndex,
                          const std::function<void(VkCommandBuffer)> &overlay) const {
     if (!source_)
         throw Error("PresentPass::record before setSource");
-    accumulationBarrier(commands, source_, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                        VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                        VK_ACCESS_SHADER_READ_BIT);
+    vk::imageBarrier(commands, source_, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
 
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     begin.renderPass = renderPass_->handle();
@@ -92,9 +74,9 @@ void PresentPass::record(VkCommandBuffer commands, uint32_t imageIndex,
     vkCmdEndRenderPass(commands);
 
     // Write-after-read: the next frame's samples overwrite what this pass read.
-    accumulationBarrier(commands, source_, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
-                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    vk::imageBarrier(commands, source_, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }
 
 } // namespace prism

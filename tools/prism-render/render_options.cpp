@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "size_option.h"
+#include "tool_environment.h"
 
 namespace prism {
 namespace {
@@ -101,13 +102,8 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
         throw Error("output " + output + ": unsupported extension; use .exr or .png");
     if ((options.aovDepth || options.aovNormal) && ext != ".exr")
         throw Error("--aov needs an .exr output (PNG holds colour only)");
-#ifdef PRISM_DEFAULT_VALIDATION
-    options.validation = true;
-#endif
-    if (const char *env = std::getenv("PRISM_VALIDATION"); env && std::string(env) == "1")
-        options.validation = true;
-    for (int i = 0; i < argc; ++i)
-        options.commandLine += (i ? " " : "") + std::string(argv[i]);
+    options.validation = validationWanted(options.validation);
+    options.commandLine = commandLineText(argc, argv);
     return true;
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "size_option.h"
+#include "tool_environment.h"
 
 namespace prism {
 namespace {
@@ -107,13 +108,8 @@ bool parseViewOptions(int argc, char **argv, ViewOptions &options, int &exitCode
     }
     if (!screenshot.empty() && options.scriptFrames == 0)
         throw Error("--screenshot is written at the end of a scripted run (--script-frames N)");
-#ifdef PRISM_DEFAULT_VALIDATION
-    options.validation = true;
-#endif
-    if (const char *env = std::getenv("PRISM_VALIDATION"); env && std::string(env) == "1")
-        options.validation = true;
-    for (int i = 0; i < argc; ++i)
-        options.commandLine += (i ? " " : "") + std::string(argv[i]);
+    options.validation = validationWanted(options.validation);
+    options.commandLine = commandLineText(argc, argv);
     return true;
 }
 
