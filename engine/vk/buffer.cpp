@@ -18,9 +18,9 @@ Buffer::Buffer(const Context &context, VkDeviceSize size, VkBufferUsageFlags usa
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device_, buffer_, &requirements);
-    VkMemoryPropertyFlags wanted = hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                                     VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-                                               : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    VkMemoryPropertyFlags wanted =
+        hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                    : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = requirements.size;
     try {
@@ -35,9 +35,13 @@ Buffer::Buffer(const Context &context, VkDeviceSize size, VkBufferUsageFlags usa
     }
 }
 
-Buffer::~Buffer() { release(); }
+Buffer::~Buffer() {
+    release();
+}
 
-Buffer::Buffer(Buffer &&other) noexcept { *this = std::move(other); }
+Buffer::Buffer(Buffer &&other) noexcept {
+    *this = std::move(other);
+}
 
 Buffer &Buffer::operator=(Buffer &&other) noexcept {
     if (this != &other) {

@@ -7,6 +7,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "vk/descriptor_set.h"
+
 namespace prism::vk {
 
 class Context;
@@ -25,9 +27,15 @@ public:
     ComputePipeline(const ComputePipeline &) = delete;
     ComputePipeline &operator=(const ComputePipeline &) = delete;
 
-    void bindBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize size = VK_WHOLE_SIZE);
-    void bindStorageImage(uint32_t binding, VkImageView view);
-    void bindTexelBuffer(uint32_t binding, VkBufferView view);
+    void bindBuffer(uint32_t binding, VkBuffer buffer, VkDeviceSize size = VK_WHOLE_SIZE) {
+        set_.writeBuffer(binding, buffer, size);
+    }
+    void bindStorageImage(uint32_t binding, VkImageView view) {
+        set_.writeStorageImage(binding, view);
+    }
+    void bindTexelBuffer(uint32_t binding, VkBufferView view) {
+        set_.writeTexelBuffer(binding, view);
+    }
     // Binds pipeline and descriptor set on `commands`.
     void bind(VkCommandBuffer commands) const;
     VkPipelineLayout layout() const { return layout_; }
@@ -35,13 +43,10 @@ public:
 private:
     void destroy();
     VkDevice device_;
-    std::vector<VkDescriptorType> types_;
+    DescriptorSet set_;
     VkShaderModule module_ = VK_NULL_HANDLE;
-    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
-    VkDescriptorPool pool_ = VK_NULL_HANDLE;
-    VkDescriptorSet set_ = VK_NULL_HANDLE;
 };
 
 } // namespace prism::vk

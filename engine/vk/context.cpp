@@ -29,11 +29,16 @@ bool hasLayer(const char *name) {
 
 int deviceTypeRank(VkPhysicalDeviceType type) {
     switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
-    default: return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+        return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+        return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+        return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+        return 3;
+    default:
+        return 4;
     }
 }
 
@@ -50,7 +55,9 @@ Context::Context(const ContextOptions &options) {
     }
 }
 
-Context::~Context() { destroy(); }
+Context::~Context() {
+    destroy();
+}
 
 void Context::destroy() {
     if (device_)
@@ -155,9 +162,9 @@ void Context::pickPhysicalDevice(const ContextOptions &options) {
     }
     if (!physicalDevice_)
         throw Error("No suitable Vulkan 1.2+ device" +
-                    (options.deviceNameFilter.empty() ? std::string()
-                                                      : " matching \"" + options.deviceNameFilter +
-                                                            "\"") +
+                    (options.deviceNameFilter.empty()
+                         ? std::string()
+                         : " matching \"" + options.deviceNameFilter + "\"") +
                     " among: " + seen);
 
     vkGetPhysicalDeviceProperties(physicalDevice_, &properties_);

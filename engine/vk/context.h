@@ -10,10 +10,10 @@
 namespace prism::vk {
 
 struct ContextOptions {
-    bool validation = false;                  // Khronos validation layer + debug messenger
+    bool validation = false;                      // Khronos validation layer + debug messenger
     std::vector<const char *> instanceExtensions; // e.g. what GLFW needs for a surface
     std::vector<const char *> deviceExtensions;   // e.g. VK_KHR_swapchain
-    std::string deviceNameFilter;             // choose the first device whose name contains this
+    std::string deviceNameFilter; // choose the first device whose name contains this
 };
 
 class Context {

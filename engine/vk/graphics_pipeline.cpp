@@ -1,59 +1,27 @@
 #include "vk/graphics_pipeline.h"
 
-#include <map>
-
 #include "vk/context.h"
 #include "vk/vk_check.h"
 
 namespace prism::vk {
-namespace {
-
-VkShaderModule createModule(VkDevice device, std::span<const uint32_t> spirv) {
-    VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    info.codeSize = spirv.size_bytes();
-    info.pCode = spirv.data();
-    VkShaderModule module = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateShaderModule(device, &info, nullptr, &module));
-    return module;
-}
-
-} // namespace
-
 GraphicsPipeline::GraphicsPipeline(const Context &context, const GraphicsPipelineDesc &desc)
-    : device_(context.device()), types_(desc.bindings) {
+    : device_(context.device()), set_(device_, desc.bindings, VK_SHADER_STAGE_FRAGMENT_BIT) {
     try {
-        vertex_ = createModule(device_, desc.vertexSpirv);
-        fragment_ = createModule(device_, desc.fragmentSpirv);
+        vertex_ =
+            createShaderModule(device_, desc.vertexSpirv.data(), desc.vertexSpirv.size_bytes());
+        fragment_ =
+            createShaderModule(device_, desc.fragmentSpirv.data(), desc.fragmentSpirv.size_bytes());
 
-        std::vector<VkDescriptorSetLayoutBinding> bindings;
-        std::map<VkDescriptorType, uint32_t> typeCounts;
-        for (uint32_t i = 0; i < types_.size(); ++i) {
-            bindings.push_back({i, types_[i], 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
-            typeCounts[types_[i]] += 1;
-        }
-        VkDescriptorSetLayoutCreateInfo setInfo{
-            VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-        setInfo.bindingCount = static_cast<uint32_t>(bindings.size());
-        setInfo.pBindings = bindings.data();
-        VK_CHECK(vkCreateDescriptorSetLayout(device_, &setInfo, nullptr, &setLayout_));
-
+        VkDescriptorSetLayout setLayout = set_.layout();
         VkPushConstantRange range{VK_SHADER_STAGE_FRAGMENT_BIT, 0, desc.pushConstantBytes};
         VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
         layoutInfo.setLayoutCount = 1;
-        layoutInfo.pSetLayouts = &setLayout_;
+        layoutInfo.pSetLayouts = &setLayout;
         layoutInfo.pushConstantRangeCount = desc.pushConstantBytes ? 1 : 0;
         layoutInfo.pPushConstantRanges = &range;
         VK_CHECK(vkCreatePipelineLayout(device_, &layoutInfo, nullptr, &layout_));
 
-        std::vector<VkSpecializationMapEntry> entries;
-        for (uint32_t i = 0; i < desc.fragmentSpecialization.size(); ++i)
-            entries.push_back({i, i * 4u, 4u});
-        VkSpecializationInfo specInfo{};
-        specInfo.mapEntryCount = static_cast<uint32_t>(entries.size());
-        specInfo.pMapEntries = entries.data();
-        specInfo.dataSize = desc.fragmentSpecialization.size() * 4u;
-        specInfo.pData = desc.fragmentSpecialization.data();
-
+        SpecializationData specialization(desc.fragmentSpecialization);
         VkPipelineShaderStageCreateInfo stages[2]{};
         stages[0].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
         stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -63,7 +31,7 @@ GraphicsPipeline::GraphicsPipeline(const Context &context, const GraphicsPipelin
         stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
         stages[1].module = fragment_;
         stages[1].pName = "main";
-        stages[1].pSpecializationInfo = entries.empty() ? nullptr : &specInfo;
+        stages[1].pSpecializationInfo = specialization.pointer();
 
         VkPipelineVertexInputStateCreateInfo vertexInput{
             VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
@@ -110,21 +78,6 @@ GraphicsPipeline::GraphicsPipeline(const Context &context, const GraphicsPipelin
         info.renderPass = desc.renderPass;
         info.subpass = 0;
         VK_CHECK(vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_));
-
-        std::vector<VkDescriptorPoolSize> sizes;
-        for (auto [type, count] : typeCounts)
-            sizes.push_back({type, count});
-        VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-        poolInfo.maxSets = 1;
-        poolInfo.poolSizeCount = static_cast<uint32_t>(sizes.size());
-        poolInfo.pPoolSizes = sizes.data();
-        VK_CHECK(vkCreateDescriptorPool(device_, &poolInfo, nullptr, &pool_));
-
-        VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-        allocInfo.descriptorPool = pool_;
-        allocInfo.descriptorSetCount = 1;
-        allocInfo.pSetLayouts = &setLayout_;
-        VK_CHECK(vkAllocateDescriptorSets(device_, &allocInfo, &set_));
     } catch (...) {
         destroy();
         throw;
@@ -136,41 +89,24 @@ GraphicsPipeline::~GraphicsPipeline() {
 }
 
 void GraphicsPipeline::destroy() {
-    if (pool_)
-        vkDestroyDescriptorPool(device_, pool_, nullptr); // frees the set
     if (pipeline_)
         vkDestroyPipeline(device_, pipeline_, nullptr);
     if (layout_)
         vkDestroyPipelineLayout(device_, layout_, nullptr);
-    if (setLayout_)
-        vkDestroyDescriptorSetLayout(device_, setLayout_, nullptr);
     if (fragment_)
         vkDestroyShaderModule(device_, fragment_, nullptr);
     if (vertex_)
         vkDestroyShaderModule(device_, vertex_, nullptr);
-    pool_ = VK_NULL_HANDLE;
     pipeline_ = VK_NULL_HANDLE;
     layout_ = VK_NULL_HANDLE;
-    setLayout_ = VK_NULL_HANDLE;
     fragment_ = VK_NULL_HANDLE;
     vertex_ = VK_NULL_HANDLE;
 }
 
-void GraphicsPipeline::bindStorageImage(uint32_t binding, VkImageView view) {
-    VkDescriptorImageInfo info{VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = set_;
-    write.dstBinding = binding;
-    write.descriptorCount = 1;
-    write.descriptorType = types_.at(binding);
-    write.pImageInfo = &info;
-    vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
-}
-
 void GraphicsPipeline::bind(VkCommandBuffer commands) const {
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set_, 0,
-                            nullptr);
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1,
+                            &set_.handle(), 0, nullptr);
 }
 
 } // namespace prism::vk

@@ -8,6 +8,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include "vk/descriptor_set.h"
+
 namespace prism::vk {
 
 class Context;
@@ -29,7 +31,9 @@ public:
     GraphicsPipeline &operator=(const GraphicsPipeline &) = delete;
 
     // The caller makes sure no command buffer in flight uses the set.
-    void bindStorageImage(uint32_t binding, VkImageView view);
+    void bindStorageImage(uint32_t binding, VkImageView view) {
+        set_.writeStorageImage(binding, view);
+    }
     // Binds pipeline and descriptor set on `commands`.
     void bind(VkCommandBuffer commands) const;
     VkPipelineLayout layout() const { return layout_; }
@@ -37,14 +41,11 @@ public:
 private:
     void destroy();
     VkDevice device_;
-    std::vector<VkDescriptorType> types_;
+    DescriptorSet set_;
     VkShaderModule vertex_ = VK_NULL_HANDLE;
     VkShaderModule fragment_ = VK_NULL_HANDLE;
-    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
-    VkDescriptorPool pool_ = VK_NULL_HANDLE;
-    VkDescriptorSet set_ = VK_NULL_HANDLE;
 };
 
 } // namespace prism::vk

@@ -43,9 +43,13 @@ Image::Image(const Context &context, uint32_t width, uint32_t height, VkFormat f
     }
 }
 
-Image::~Image() { release(); }
+Image::~Image() {
+    release();
+}
 
-Image::Image(Image &&other) noexcept { *this = std::move(other); }
+Image::Image(Image &&other) noexcept {
+    *this = std::move(other);
+}
 
 Image &Image::operator=(Image &&other) noexcept {
     if (this != &other) {
