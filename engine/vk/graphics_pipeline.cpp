@@ -4,6 +4,7 @@
 #include "vk/vk_check.h"
 
 namespace prism::vk {
+
 GraphicsPipeline::GraphicsPipeline(const Context &context, const GraphicsPipelineDesc &desc)
     : device_(context.device()), set_(device_, desc.bindings, VK_SHADER_STAGE_FRAGMENT_BIT) {
     try {
