@@ -13,8 +13,8 @@ struct Camera {
     glm::vec3 eye{0.0f, 0.0f, 5.0f};
     glm::vec3 look{0.0f, 0.0f, 0.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
-    float fovDegrees = 60.0f;  // vertical field of view (perspective only)
-    float orthoHeight = 0.0f;  // > 0: parallel projection with an image plane this tall
+    float fovDegrees = 60.0f; // vertical field of view (perspective only)
+    float orthoHeight = 0.0f; // > 0: parallel projection with an image plane this tall
     bool isOrtho() const { return orthoHeight > 0.0f; }
 };
 
@@ -60,9 +60,9 @@ struct Plane {
 };
 
 struct Triangle {
-    glm::vec3 p[3];           // counter-clockwise front face; Ng = (p1 - p0) x (p2 - p0)
-    glm::vec3 n[3]{};         // vertex normals, valid when hasNormals
-    glm::vec2 uv[3]{};        // texture coordinates, valid when hasUVs
+    glm::vec3 p[3];    // counter-clockwise front face; Ng = (p1 - p0) x (p2 - p0)
+    glm::vec3 n[3]{};  // vertex normals, valid when hasNormals
+    glm::vec2 uv[3]{}; // texture coordinates, valid when hasUVs
     bool hasNormals = false;
     bool hasUVs = false;
     uint32_t material = 0;

@@ -14,44 +14,44 @@ PRISM_NAMESPACE_BEGIN
 
 // Primitive ids in grid cells: spheres [0, sphereCount), then triangles.
 struct GpuSceneHeader {
-    vec4 gridMin;        // xyz: grid bounds min
-    vec4 gridMax;        // xyz: grid bounds max
-    vec4 cellSize;       // xyz: size of one cell; w unused
-    uvec4 gridRes;       // xyz: cells per axis; w: cell count
-    uvec4 counts;        // x: spheres, y: planes, z: triangles, w: lights
-    vec4 background;     // rgb
-    vec4 ambient;        // rgb: scene ambient light
+    vec4 gridMin;    // xyz: grid bounds min
+    vec4 gridMax;    // xyz: grid bounds max
+    vec4 cellSize;   // xyz: size of one cell; w unused
+    uvec4 gridRes;   // xyz: cells per axis; w: cell count
+    uvec4 counts;    // x: spheres, y: planes, z: triangles, w: lights
+    vec4 background; // rgb
+    vec4 ambient;    // rgb: scene ambient light
 };
 
 struct GpuSphere {
-    vec4 centerRadius;   // xyz centre, w radius
-    uvec4 material;      // x: material index
+    vec4 centerRadius; // xyz centre, w radius
+    uvec4 material;    // x: material index
 };
 
 struct GpuPlane {
-    vec4 normalOffset;   // xyz unit normal, w = dot(normal, point)
-    vec4 point;          // xyz a point on the plane; w: material index (as float, exact)
+    vec4 normalOffset; // xyz unit normal, w = dot(normal, point)
+    vec4 point;        // xyz a point on the plane; w: material index (as float, exact)
 };
 
 // Vertices only: the intersection loop reads 48 bytes per triangle; shading data lives apart.
 struct GpuTriangle {
-    vec4 v0;             // w: material index (as float, exact below 2^24)
+    vec4 v0; // w: material index (as float, exact below 2^24)
     vec4 v1;
     vec4 v2;
 };
 
 struct GpuTriangleShading {
-    vec4 n0;             // vertex normals; n0.w = 1 when present
-    vec4 n1;             // n1.w = 1 when texture coordinates are present
+    vec4 n0; // vertex normals; n0.w = 1 when present
+    vec4 n1; // n1.w = 1 when texture coordinates are present
     vec4 n2;
-    vec4 uv01;           // xy: uv0, zw: uv1
-    vec4 uv2;            // xy: uv2
+    vec4 uv01; // xy: uv0, zw: uv1
+    vec4 uv2;  // xy: uv2
 };
 
 struct GpuMaterial {
-    vec4 colorAmbient;   // rgb colour, a: ambient coefficient
-    vec4 lighting;       // x diffuse, y specular, z shininess, w reflect
-    vec4 optics;         // x transmit, y ior, z texture index (-1: none)
+    vec4 colorAmbient; // rgb colour, a: ambient coefficient
+    vec4 lighting;     // x diffuse, y specular, z shininess, w reflect
+    vec4 optics;       // x transmit, y ior, z texture index (-1: none)
 };
 
 struct GpuLight {
@@ -60,25 +60,25 @@ struct GpuLight {
 };
 
 struct GpuTexture {
-    uvec4 info;          // x: first texel in the texel array, y: width, z: height
+    uvec4 info; // x: first texel in the texel array, y: width, z: height
 };
 
 // Counters the tracer adds to with atomics (64-bit: a frame can trace billions of rays).
 struct GpuStats {
-    uvec4 primary;       // xy: uint64 as two words (lo, hi)
+    uvec4 primary; // xy: uint64 as two words (lo, hi)
     uvec4 shadow;
     uvec4 secondary;
-    uvec4 budget;        // x: pixels that hit the loop budget
+    uvec4 budget; // x: pixels that hit the loop budget
 };
 
 // Per-frame parameters (push constants, 128 bytes at most).
 struct GpuFrameParams {
-    vec4 eye;            // xyz: camera position; w: 1 for parallel projection
-    vec4 forward;        // xyz: unit view direction
-    vec4 du;             // right scaled by h*a (perspective) or (H/2)*a (ortho)
-    vec4 dv;             // true up scaled by h (perspective) or H/2 (ortho)
-    uvec4 image;         // x width, y height, z first sample index, w samples per pixel in total
-    uvec4 control;       // x: max depth, y: samples in this dispatch
+    vec4 eye;      // xyz: camera position; w: 1 for parallel projection
+    vec4 forward;  // xyz: unit view direction
+    vec4 du;       // right scaled by h*a (perspective) or (H/2)*a (ortho)
+    vec4 dv;       // true up scaled by h (perspective) or H/2 (ortho)
+    uvec4 image;   // x width, y height, z first sample index, w samples per pixel in total
+    uvec4 control; // x: max depth, y: samples in this dispatch
 };
 
 PRISM_NAMESPACE_END

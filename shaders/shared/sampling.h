@@ -31,8 +31,10 @@ PRISM_INLINE float sample01(uint pixelIndex, uint sampleIndex, uint dimension) {
 // Strata for N samples per pixel: columns = floor(sqrt(N)), rows = ceil(N / columns).
 PRISM_INLINE uint strataColumns(uint samplesPerPixel) {
     uint c = uint(sqrt(float(samplesPerPixel)));
-    while ((c + 1u) * (c + 1u) <= samplesPerPixel) c += 1u; // guard against sqrt rounding
-    while (c * c > samplesPerPixel) c -= 1u;
+    while ((c + 1u) * (c + 1u) <= samplesPerPixel)
+        c += 1u; // guard against sqrt rounding
+    while (c * c > samplesPerPixel)
+        c -= 1u;
     return c < 1u ? 1u : c;
 }
 PRISM_INLINE uint strataRows(uint samplesPerPixel) {
@@ -55,7 +57,8 @@ PRISM_INLINE vec2 stratifiedPair(uint pixelIndex, uint sampleIndex, uint samples
     uint k = (sampleIndex + sampleBits(pixelIndex, 0xA511E9B3u, dimension)) % samplesPerPixel;
     float jx = sample01(pixelIndex, sampleIndex, dimension);
     float jy = sample01(pixelIndex, sampleIndex, dimension + 1u);
-    return vec2((float(k % columns) + jx) / float(columns), (float(k / columns) + jy) / float(rows));
+    return vec2((float(k % columns) + jx) / float(columns),
+                (float(k / columns) + jy) / float(rows));
 }
 
 PRISM_NAMESPACE_END
