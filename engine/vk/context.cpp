@@ -123,7 +123,7 @@ void Context::createInstance(const ContextOptions &options) {
 
     VkResult result = vkCreateInstance(&info, nullptr, &instance_);
     if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
-        throw Error(std::string("No Vulkan 1.3 driver found. ") + kInstallHint);
+        throw Error(std::string("No usable Vulkan driver found. ") + kInstallHint);
     VK_CHECK(result);
 
     if (options.validation) {
