@@ -38,10 +38,7 @@ struct Grid {
     std::vector<uint32_t> cellStart;
     std::vector<uint32_t> cellPrimitives;
 
-    // Statistics, for --stats and the density measurements.
-    uint32_t maxPerCell = 0;
-    double meanPerNonEmptyCell = 0.0;
-    uint64_t emptyCells = 0;
+    uint32_t maxPerCell = 0; // the fullest cell's count, for --stats and the benchmarks
 
     uint64_t cellCount() const {
         return uint64_t(resolution.x) * uint64_t(resolution.y) * uint64_t(resolution.z);

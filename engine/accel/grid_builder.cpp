@@ -83,15 +83,11 @@ void fillCells(Grid &grid, std::vector<std::pair<uint32_t, uint32_t>> &pairs) {
     grid.cellStart.assign(cells + 1, 0u);
     for (const auto &[cell, id] : pairs)
         ++grid.cellStart[cell + 1];
-    uint64_t nonEmpty = 0;
     for (uint64_t c = 0; c < cells; ++c) {
         uint32_t count = grid.cellStart[c + 1];
         grid.maxPerCell = std::max(grid.maxPerCell, count);
-        nonEmpty += count > 0 ? 1 : 0;
         grid.cellStart[c + 1] += grid.cellStart[c];
     }
-    grid.emptyCells = cells - nonEmpty;
-    grid.meanPerNonEmptyCell = nonEmpty ? double(pairs.size()) / double(nonEmpty) : 0.0;
     // Stable counting sort: ids stay in increasing order within a cell.
     grid.cellPrimitives.resize(pairs.size());
     std::vector<uint32_t> cursor(grid.cellStart.begin(), grid.cellStart.end() - 1);
@@ -139,8 +135,6 @@ Grid buildGrid(const Scene &scene, const GridOptions &options) {
         for (uint32_t id = 0; id < primitives; ++id)
             grid.cellPrimitives[id] = id;
         grid.maxPerCell = uint32_t(primitives);
-        grid.meanPerNonEmptyCell = double(primitives);
-        grid.emptyCells = primitives ? 0 : 1;
         return grid;
     }
 

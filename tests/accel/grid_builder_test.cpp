@@ -33,7 +33,6 @@ TEST(GridBuilder, EmptySceneIsOneEmptyCell) {
     expectWellFormed(g);
     EXPECT_EQ(g.resolution, glm::ivec3(1));
     EXPECT_TRUE(g.cellPrimitives.empty());
-    EXPECT_EQ(g.emptyCells, 1u);
 }
 
 TEST(GridBuilder, BoundsCoverFinitePrimitivesOnlyAndAreTight) {
@@ -147,19 +146,14 @@ TEST(GridBuilder, CellsListExactlyTheOverlappingPrimitives) {
             }
 }
 
-TEST(GridBuilder, StatisticsDescribeTheCells) {
+TEST(GridBuilder, MaxPerCellIsTheFullestCell) {
     Scene scene = test::randomSpheresAndTriangles(6, 100, 0);
     Grid g = buildGrid(scene, parseGridOption("8"));
     uint32_t maxCount = 0;
-    uint64_t empty = 0;
-    for (size_t i = 0; i + 1 < g.cellStart.size(); ++i) {
-        uint32_t n = g.cellStart[i + 1] - g.cellStart[i];
-        maxCount = std::max(maxCount, n);
-        empty += n == 0;
-    }
+    for (size_t i = 0; i + 1 < g.cellStart.size(); ++i)
+        maxCount = std::max(maxCount, g.cellStart[i + 1] - g.cellStart[i]);
     EXPECT_EQ(g.maxPerCell, maxCount);
-    EXPECT_EQ(g.emptyCells, empty);
-    EXPECT_NEAR(g.meanPerNonEmptyCell, double(g.cellPrimitives.size()) / double(512 - empty), 1e-9);
+    EXPECT_GT(maxCount, 1u);
 }
 
 } // namespace

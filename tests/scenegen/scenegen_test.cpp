@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "scene/scene_loader.h"
+#include "scene_test_support.h" // tests/scene: TempDir
 
 namespace prism {
 namespace {
@@ -26,26 +27,7 @@ std::string readFile(const std::filesystem::path &path) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// A fresh directory under the system temp dir, removed with everything in it afterwards.
-class TempDir {
-public:
-    TempDir() {
-        std::string pattern = (std::filesystem::temp_directory_path() / "prism-scenegen-XXXXXX");
-        if (!::mkdtemp(pattern.data()))
-            throw std::runtime_error("mkdtemp failed");
-        path_ = pattern;
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        std::filesystem::remove_all(path_, ignored);
-    }
-    TempDir(const TempDir &) = delete;
-    TempDir &operator=(const TempDir &) = delete;
-    const std::filesystem::path &path() const { return path_; }
-
-private:
-    std::filesystem::path path_;
-};
+using prism::test::TempDir;
 
 struct RunResult {
     int exitCode = -1;
