@@ -2,7 +2,7 @@
 // every metadata attribute.
 #include "io/image_reader.h"
 #include "io/image_writer.h"
-#include "scratch_dir.h"
+#include "temp_dir_fixture.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 namespace prism {
 namespace {
 
-using ExrWrite = test::ScratchDir;
+using ExrWrite = test::TempDirTest;
 
 int channelIndex(const LoadedImage &image, const std::string &name) {
     auto it = std::find(image.channelNames.begin(), image.channelNames.end(), name);

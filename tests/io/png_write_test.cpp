@@ -1,7 +1,7 @@
 // PNG output: 8-bit RGB with the exact sRGB curve, clamped and rounded to nearest.
 #include "io/image_reader.h"
 #include "io/image_writer.h"
-#include "scratch_dir.h"
+#include "temp_dir_fixture.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 namespace prism {
 namespace {
 
-using PngWrite = test::ScratchDir;
+using PngWrite = test::TempDirTest;
 
 // One row of linear values, grey (R = G = B), alpha varying to show it is ignored.
 OutputImage greyRow(const std::vector<float> &linear) {

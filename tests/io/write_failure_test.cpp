@@ -3,19 +3,20 @@
 #include "core/error.h"
 #include "io/image_reader.h"
 #include "io/image_writer.h"
-#include "scratch_dir.h"
+#include "read_file.h"
+#include "temp_dir_fixture.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
 namespace prism {
 namespace {
 
-using WriteFailure = test::ScratchDir;
+using WriteFailure = test::TempDirTest;
+using test::readFile;
 
 OutputImage smallImage() {
     OutputImage image;
@@ -34,11 +35,6 @@ template <typename Write> std::string errorFrom(Write write) {
     }
     ADD_FAILURE() << "expected prism::Error";
     return {};
-}
-
-std::string fileBytes(const std::filesystem::path &path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 TEST_F(WriteFailure, UnsupportedExtensionNamesPathAndSupportedFormats) {
@@ -65,7 +61,7 @@ TEST_F(WriteFailure, MissingDirectoryFailsClearlyAndCreatesNothing) {
 TEST_F(WriteFailure, MalformedImageIsRejectedBeforeTouchingTheTarget) {
     const auto path = dir() / "frame.exr";
     writeImage(path, smallImage(), {});
-    const std::string before = fileBytes(path);
+    const std::string before = readFile(path);
 
     OutputImage shortRgba = smallImage();
     shortRgba.rgba.pop_back();
@@ -80,7 +76,7 @@ TEST_F(WriteFailure, MalformedImageIsRejectedBeforeTouchingTheTarget) {
     OutputImage empty;
     EXPECT_FALSE(errorFrom([&] { writeImage(path, empty, {}); }).empty());
 
-    EXPECT_EQ(fileBytes(path), before);
+    EXPECT_EQ(readFile(path), before);
     EXPECT_EQ(entries(), std::vector<std::string>{"frame.exr"});
 }
 
@@ -94,7 +90,7 @@ TEST_F(WriteFailure, FailedReplaceRemovesTheTemporaryFile) {
     const std::string message = errorFrom([&] { writeImage(path, smallImage(), {}); });
     EXPECT_NE(message.find(path.string()), std::string::npos) << message;
     EXPECT_EQ(entries(), std::vector<std::string>{"busy.exr"});
-    EXPECT_EQ(fileBytes(path / "keep.txt"), "kept");
+    EXPECT_EQ(readFile(path / "keep.txt"), "kept");
 }
 
 TEST_F(WriteFailure, ReadingAMissingFileNamesIt) {

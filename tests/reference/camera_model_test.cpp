@@ -6,16 +6,14 @@
 
 #include <gtest/gtest.h>
 
+#include "expect_near.h"
 #include "reference/camera_model.h"
 #include "shared/sampling.h"
 
 namespace prism {
 namespace {
 
-void expectNear(glm::dvec3 a, glm::dvec3 b, double tolerance) {
-    for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(a[c], b[c], tolerance) << "component " << c;
-}
+using test::expectNear;
 
 Camera obliqueCamera() {
     Camera camera;

@@ -7,7 +7,7 @@
 
 #include "reference/intersect_reference.h"
 #include "reference/scene_query.h"
-#include "reference_test_scenes.h"
+#include "scene_builders.h"
 
 namespace prism::reference {
 namespace {

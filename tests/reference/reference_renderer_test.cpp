@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "reference/reference_renderer.h"
 #include "reference_test_scenes.h"
+#include "scene_transform.h"
 
 namespace prism {
 namespace {
@@ -127,7 +128,7 @@ TEST(ReferenceRenderer, SameImageAtEveryScale) {
     RenderSettings s = settings(32, 24, 4, 5);
     RenderedImage reference = renderReference(base, s);
     for (float scale : {1e-3f, 1e3f}) {
-        RenderedImage image = renderReference(test::scaled(base, scale), s);
+        RenderedImage image = renderReference(test::transformed(base, scale), s);
         double largest = 0.0;
         for (size_t p = 0; p < image.rgba.size(); ++p)
             for (int c = 0; c < 3; ++c)

@@ -4,8 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include "expect_near.h"
 #include "reference/surface_reference.h"
-#include "reference_test_scenes.h"
+#include "scene_builders.h"
 #include "shared/gpu_types.h"
 
 namespace prism::reference {
@@ -13,11 +14,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-void expectNear(glm::dvec3 a, glm::dvec3 b, double tolerance, const char *what = "") {
-    SCOPED_TRACE(what);
-    for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(a[c], b[c], tolerance) << "component " << c;
-}
+using test::expectNear;
 
 TEST(SurfaceAt, SpherePointNormalAndUV) {
     Scene scene = test::sceneWithDefaultMaterial();

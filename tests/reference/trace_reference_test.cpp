@@ -5,18 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include "expect_near.h"
 #include "reference/reference_renderer.h"
 #include "reference/trace_reference.h"
-#include "reference_test_scenes.h"
+#include "scene_builders.h"
 
 namespace prism {
 namespace {
 
-void expectNear(glm::dvec3 a, glm::dvec3 b, double tolerance, const char *what = "") {
-    SCOPED_TRACE(what);
-    for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(a[c], b[c], tolerance) << "component " << c;
-}
+using test::expectNear;
 
 // One sphere at the origin, radius 1, lit by one point light; camera on +z.
 Scene litSphere() {

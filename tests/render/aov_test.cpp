@@ -5,7 +5,7 @@
 
 #include "gpu_fixture.h"
 #include "render_helpers.h"
-#include "test_scenes.h"
+#include "scene_builders.h"
 
 namespace prism::test {
 namespace {
@@ -13,8 +13,7 @@ namespace {
 class Aov : public GpuTest {};
 
 TEST_F(Aov, DepthAndNormalOfTheCentreRay) {
-    Scene scene;
-    scene.materials.push_back(Material{"default"});
+    Scene scene = sceneWithDefaultMaterial();
     scene.spheres.push_back(Sphere{{0.0f, 0.0f, 0.0f}, 1.0f, 0});
     scene.camera.eye = {0.0f, 0.0f, 5.0f};
     scene.camera.look = {0.0f, 0.0f, 0.0f};

@@ -2,14 +2,17 @@
 // materials and their warnings, zero-area triangles.
 #include <gtest/gtest.h>
 
+#include "expect_file_error.h"
 #include "scene/scene_loader.h"
-#include "scene_test_support.h"
+#include "scene_warnings.h"
+#include "temp_dir.h"
 
 #include <OpenImageIO/imageio.h>
 
 namespace prism {
 namespace {
 
+using test::allWarnings;
 using test::TempDir;
 
 const char *kTriangle = "v 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n";
@@ -29,13 +32,6 @@ bool hasWarning(const Scene &scene, const std::string &prefix, const std::string
         if (w.rfind(prefix, 0) == 0 && w.find(fragment) != std::string::npos)
             return true;
     return false;
-}
-
-std::string allWarnings(const Scene &scene) {
-    std::string text;
-    for (const std::string &w : scene.warnings)
-        text += w + "\n";
-    return text;
 }
 
 TEST(MeshImporter, TransformsApplyScaleThenRotationsThenTranslationWhateverTheKeyOrder) {

@@ -4,7 +4,8 @@
 
 #include "core/timer.h"
 #include "scene/scene_loader.h"
-#include "scene_test_support.h"
+#include "scene_warnings.h"
+#include "temp_dir.h"
 
 #include <set>
 #include <sstream>
@@ -12,16 +13,11 @@
 namespace prism {
 namespace {
 
+using test::allWarnings;
+
 // Parses `text` as if it were a scene file in assets/models/.
 Scene modelsScene(const std::string &text) {
     return parseScene(text, std::filesystem::path(PRISM_ASSETS_DIR) / "models" / "test.scene");
-}
-
-std::string allWarnings(const Scene &scene) {
-    std::string text;
-    for (const std::string &w : scene.warnings)
-        text += w + "\n";
-    return text;
 }
 
 TEST(ModelAssets, CornellBoxCrlfNegativeIndicesAndMaterials) {

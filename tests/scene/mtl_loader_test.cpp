@@ -1,8 +1,8 @@
 // The MTL reader and its mapping to scene materials (engine/scene/mtl_loader.cpp).
 #include <gtest/gtest.h>
 
+#include "expect_file_error.h"
 #include "scene/mtl_loader.h"
-#include "scene_test_support.h"
 
 namespace prism {
 namespace {

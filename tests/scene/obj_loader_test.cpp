@@ -1,8 +1,8 @@
 // The OBJ reader (engine/scene/obj_loader.cpp): statements, index forms, errors at OBJ lines.
 #include <gtest/gtest.h>
 
+#include "expect_file_error.h"
 #include "scene/obj_loader.h"
-#include "scene_test_support.h"
 
 namespace prism {
 namespace {

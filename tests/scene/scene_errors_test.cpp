@@ -2,8 +2,9 @@
 // (engine/scene/scene_parser.cpp, scene_directives.cpp, directive_args.cpp).
 #include <gtest/gtest.h>
 
+#include "expect_file_error.h"
 #include "scene/scene_loader.h"
-#include "scene_test_support.h"
+#include "temp_dir.h"
 
 namespace prism {
 namespace {

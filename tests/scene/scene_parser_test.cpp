@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "scene/scene_loader.h"
-#include "scene_test_support.h"
+#include "temp_dir.h"
 
 #include <cmath>
 

@@ -1,9 +1,10 @@
 // Texture decoding and caching (engine/scene/texture_loader.cpp).
 #include <gtest/gtest.h>
 
+#include "core/error.h"
 #include "scene/scene_loader.h"
 #include "scene/texture_loader.h"
-#include "scene_test_support.h"
+#include "temp_dir.h"
 
 #include <OpenImageIO/imageio.h>
 

@@ -4,30 +4,25 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <set>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <vector>
 
+#include "read_file.h"
 #include "scene/scene_loader.h"
-#include "scene_test_support.h" // tests/scene: TempDir
+#include "scene_warnings.h"
+#include "temp_dir.h"
 
 namespace prism {
 namespace {
 
 const std::filesystem::path kScenes = std::filesystem::path(PRISM_ASSETS_DIR) / "scenes";
 
-std::string readFile(const std::filesystem::path &path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw std::runtime_error("cannot read " + path.string());
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-using prism::test::TempDir;
+using test::allWarnings;
+using test::readFile;
+using test::TempDir;
 
 struct RunResult {
     int exitCode = -1;
@@ -44,13 +39,6 @@ RunResult runScenegen(const std::string &args, const TempDir &dir) {
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     result.output = readFile(log);
     return result;
-}
-
-std::string allWarnings(const Scene &scene) {
-    std::string text;
-    for (const std::string &w : scene.warnings)
-        text += w + "\n";
-    return text;
 }
 
 struct ExpectedCounts {

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "temp_dir_fixture.h"
 
 namespace fs = std::filesystem;
 using prism::test::CliResult;
@@ -16,17 +17,11 @@ CliResult bench(const std::string &args) {
     return prism::test::runTool(PRISM_BENCH_EXE, args);
 }
 
-class PrismBenchCli : public ::testing::Test {
+// Each test gets a directory of its own holding one tiny scene.
+class PrismBenchCli : public prism::test::TempDirTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("prism-bench-test-" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-        scene_ = dir_ / "tiny.scene";
-        std::ofstream(scene_) << "light 2 2 5\nsphere 0 0 0 1\nsphere 1 1 -1 0.5\n"
-                                 "plane 0 -1 0 0 1 0\n";
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path dir_, scene_;
+    fs::path scene_ = write("tiny.scene", "light 2 2 5\nsphere 0 0 0 1\nsphere 1 1 -1 0.5\n"
+                                          "plane 0 -1 0 0 1 0\n");
 };
 
 TEST_F(PrismBenchCli, HelpNamesTheVariants) {
@@ -43,7 +38,7 @@ TEST_F(PrismBenchCli, BadVariantIsNamed) {
 }
 
 TEST_F(PrismBenchCli, TableAndJsonForEveryVariant) {
-    fs::path json = dir_ / "out.json";
+    fs::path json = dir() / "out.json";
     CliResult r = bench(scene_.string() +
                         " --size 16x12 --runs 3 --variants "
                         "auto,off,grid=3+no-shadows --json " +

@@ -3,7 +3,6 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -12,6 +11,7 @@
 
 #include "cli_runner.h"
 #include "io/image_reader.h"
+#include "temp_dir_fixture.h"
 
 namespace fs = std::filesystem;
 
@@ -23,24 +23,10 @@ CliResult run(const std::string &args) {
     return prism::test::runTool(PRISM_RENDER_EXE, args);
 }
 
-class PrismRenderCli : public ::testing::Test {
+// Each test writes its scenes and images into a directory of its own.
+class PrismRenderCli : public prism::test::TempDirTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("prism-cli-test-" + std::to_string(::getpid()) + "-" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path write(const std::string &name, const std::string &text) {
-        std::ofstream(dir_ / name) << text;
-        return dir_ / name;
-    }
-    size_t filesInDir() const {
-        return size_t(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()));
-    }
-    fs::path dir_;
+    size_t filesInDir() const { return entries().size(); }
 };
 
 TEST_F(PrismRenderCli, HelpListsEveryOption) {
@@ -53,7 +39,7 @@ TEST_F(PrismRenderCli, HelpListsEveryOption) {
 
 TEST_F(PrismRenderCli, SceneErrorNamesFileAndLineAndWritesNothing) {
     fs::path scene = write("bad.scene", "# fine\nsphere 0 0 0 1\nsphere 0 0 0 -1\n");
-    CliResult r = run(scene.string() + " -o " + (dir_ / "out.png").string() + " --size 8x8");
+    CliResult r = run(scene.string() + " -o " + (dir() / "out.png").string() + " --size 8x8");
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.out.find(scene.string() + ":3:"), std::string::npos) << r.out;
     EXPECT_EQ(filesInDir(), 1u) << "only the scene itself: no image, no temporary file";
@@ -61,17 +47,17 @@ TEST_F(PrismRenderCli, SceneErrorNamesFileAndLineAndWritesNothing) {
 
 TEST_F(PrismRenderCli, BadOptionsFailClearly) {
     fs::path scene = write("ok.scene", "sphere 0 0 0 1\n");
-    std::string base = scene.string() + " -o " + (dir_ / "out.png").string();
+    std::string base = scene.string() + " -o " + (dir() / "out.png").string();
     for (const char *bad : {" --size 8by8", " --grid 0", " --grid 2x2", " --spp 0",
                             " --backend metal", " --aov depth", " --grid-density 0"}) {
         CliResult r = run(base + bad);
         EXPECT_NE(r.exitCode, 0) << bad;
         EXPECT_FALSE(r.out.empty()) << bad;
     }
-    CliResult wrongExt = run(scene.string() + " -o " + (dir_ / "out.jpg").string());
+    CliResult wrongExt = run(scene.string() + " -o " + (dir() / "out.jpg").string());
     EXPECT_NE(wrongExt.exitCode, 0);
     EXPECT_NE(wrongExt.out.find(".exr"), std::string::npos);
-    CliResult missing = run((dir_ / "nope.scene").string() + " -o " + (dir_ / "x.png").string());
+    CliResult missing = run((dir() / "nope.scene").string() + " -o " + (dir() / "x.png").string());
     EXPECT_NE(missing.exitCode, 0);
     EXPECT_NE(missing.out.find("nope.scene"), std::string::npos);
     EXPECT_EQ(filesInDir(), 1u);
@@ -80,7 +66,7 @@ TEST_F(PrismRenderCli, BadOptionsFailClearly) {
 TEST_F(PrismRenderCli, StatsLineAndExrWithAovsAndMetadata) {
     fs::path scene = write("ok.scene", "camera eye 0 0 5 look 0 0 0\nlight 2 2 5\n"
                                        "sphere 0 0 0 1\nplane 0 -1 0 0 1 0\n");
-    fs::path out = dir_ / "out.exr";
+    fs::path out = dir() / "out.exr";
     CliResult r = run(scene.string() + " -o " + out.string() +
                       " --size 24x16 --spp 2 --repeat 3 --aov z,normal --stats --validation");
     ASSERT_EQ(r.exitCode, 0) << r.out;
@@ -108,7 +94,7 @@ TEST_F(PrismRenderCli, StatsLineAndExrWithAovsAndMetadata) {
 
 TEST_F(PrismRenderCli, CpuBackendWritesPng) {
     fs::path scene = write("ok.scene", "light 2 2 5\nsphere 0 0 0 1\n");
-    fs::path out = dir_ / "out.png";
+    fs::path out = dir() / "out.png";
     CliResult r =
         run(scene.string() + " -o " + out.string() + " --size 16x12 --backend cpu --quiet");
     ASSERT_EQ(r.exitCode, 0) << r.out;
