@@ -1,34 +1,22 @@
 #include "view_options.h"
 
 #include <cstdlib>
-#include <regex>
 
 #include <CLI/CLI.hpp>
 
 #include "core/error.h"
 #include "size_option.h"
 #include "tool_environment.h"
+#include "view_script.h"
 
 namespace prism {
-namespace {
 
-ScriptedResize parseResize(const std::string &text) {
-    std::smatch m;
-    static const std::regex pattern("([0-9]{1,9}):(.*)");
-    if (!std::regex_match(text, m, pattern))
-        throw Error("--resize-at must look like FRAME:WxH, got \"" + text + "\"");
-    ImageSize size = parseSizeOption(m[2], "--resize-at");
-    return {uint32_t(std::stoul(m[1])), size.width, size.height};
-}
-
-} // namespace
-
-bool parseViewOptions(int argc, char **argv, ViewOptions &options, int &exitCode) {
+bool parseViewOptions(int argc, char **argv, ViewOptions &options, ViewScript &script,
+                      int &exitCode) {
     CLI::App app{"prism-view: flies through a .scene file in a window, ray traced by Prism's "
                  "Vulkan compute tracer. While the camera is still, samples accumulate."};
     app.set_version_flag("--version", "prism-view 0.1.0");
-    std::string scene, size = "1024x768", grid = "auto", vsync = "on", screenshot;
-    std::vector<std::string> resizes;
+    std::string scene, size = "1024x768", grid = "auto", vsync = "on";
     app.add_option("SCENE", scene, "Scene file (format: docs/scene-format.md)")->required();
     app.add_option("--size", size, "Window size WxH (the traced image follows the window)")
         ->default_val("1024x768");
@@ -68,14 +56,7 @@ bool parseViewOptions(int argc, char **argv, ViewOptions &options, int &exitCode
                  "the exit status 1");
     app.add_option("--device", options.deviceFilter,
                    "Use the first Vulkan device whose name contains this text");
-    // For tests and soak runs; not in --help.
-    app.add_option("--script-frames", options.scriptFrames)->group("");
-    app.add_option("--resize-at", resizes)->group("");
-    app.add_option("--screenshot", screenshot)->group("");
-    app.add_flag("--script-orbit", options.scriptOrbit)->group("");
-    app.add_option("--report-every", options.reportEvery)->group("");
-    std::string reload;
-    app.add_option("--script-reload", reload)->group("");
+    ViewScriptOptions scriptOptions(app); // for tests and soak runs; not in --help
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
@@ -95,19 +76,7 @@ bool parseViewOptions(int argc, char **argv, ViewOptions &options, int &exitCode
             throw Error("--motion-scale takes auto or 1..8, got \"" + motionScale + "\"");
         options.motionScale = uint32_t(motionScale[0] - '0');
     }
-    for (const std::string &text : resizes)
-        options.resizes.push_back(parseResize(text));
-    options.screenshotPath = screenshot;
-    if (!reload.empty()) {
-        size_t colon = reload.find(':');
-        if (colon == std::string::npos || colon == 0 ||
-            reload.find_first_not_of("0123456789") != colon)
-            throw Error("--script-reload must look like FRAME:PATH, got \"" + reload + "\"");
-        options.reloadFrame = uint32_t(std::stoul(reload.substr(0, colon)));
-        options.reloadPath = reload.substr(colon + 1);
-    }
-    if (!screenshot.empty() && options.scriptFrames == 0)
-        throw Error("--screenshot is written at the end of a scripted run (--script-frames N)");
+    script = scriptOptions.script();
     options.validation = validationWanted(options.validation);
     options.commandLine = commandLineText(argc, argv);
     return true;

@@ -3,18 +3,14 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
-#include <vector>
 
 #include "accel/grid.h"
 
 namespace prism {
 
-// Test hook: at frame `frame` (0-based), ask the window manager for this client size.
-struct ScriptedResize {
-    uint32_t frame = 0;
-    uint32_t width = 0, height = 0;
-};
+struct ViewScript; // view_script.h: the hidden options of tests and soak runs
 
+// What a user can ask for (the options --help lists).
 struct ViewOptions {
     std::filesystem::path scenePath;
     uint32_t width = 1024, height = 768; // window client size at start
@@ -31,19 +27,12 @@ struct ViewOptions {
     bool validation = false;
     std::string deviceFilter;
     std::string commandLine;
-
-    // Scripted runs (tests, soak): no input, a fixed number of frames, then exit.
-    uint32_t scriptFrames = 0;
-    std::vector<ScriptedResize> resizes;
-    bool scriptOrbit = false;             // move the camera every frame (soak test)
-    std::filesystem::path screenshotPath; // written (EXR + PNG) when the script ends
-    uint32_t reloadFrame = 0;             // at this frame the scene file is replaced by
-    std::filesystem::path reloadPath;     // this one and reloaded (as if edited)
-    uint32_t reportEvery = 0;             // soak: print RSS every N frames
 };
 
-// Parses argv. Returns false when the program should exit with `exitCode` (help, bad usage);
-// messages have been printed then.
-bool parseViewOptions(int argc, char **argv, ViewOptions &options, int &exitCode);
+// Parses argv into the user's options and the hidden options of a scripted run (`script`, empty
+// unless the tests or a soak run asked). Returns false when the program should exit with
+// `exitCode` (help, bad usage); messages have been printed then.
+bool parseViewOptions(int argc, char **argv, ViewOptions &options, ViewScript &script,
+                      int &exitCode);
 
 } // namespace prism

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <unistd.h>
 
 #include <GLFW/glfw3.h>
 
@@ -38,14 +36,6 @@ std::string windowTitle(const std::filesystem::path &scene) {
     return "prism-view - " + scene.filename().string();
 }
 
-// Resident set size in KiB, from /proc (the soak test watches it).
-long residentKiB() {
-    std::ifstream statm("/proc/self/statm");
-    long pages = 0, resident = 0;
-    statm >> pages >> resident;
-    return resident * (sysconf(_SC_PAGESIZE) / 1024);
-}
-
 FrameResult minus(const FrameResult &a, const FrameResult &b) {
     FrameResult d;
     d.rays.primary = a.rays.primary - b.rays.primary;
@@ -57,8 +47,9 @@ FrameResult minus(const FrameResult &a, const FrameResult &b) {
 
 } // namespace
 
-Viewer::Viewer(const ViewOptions &options)
-    : options_(options), window_(options.width, options.height, windowTitle(options.scenePath)),
+Viewer::Viewer(const ViewOptions &options, ViewDriver &driver)
+    : options_(options), driver_(driver),
+      window_(options.width, options.height, windowTitle(options.scenePath)),
       context_(makeContext(options)), source_(options.scenePath), fly_(Camera{}, 1.0f) {
     surface_ = window_.createSurface(context_->instance());
     VkExtent2D size = window_.framebufferSize();
@@ -168,9 +159,7 @@ void Viewer::recreateSwapchain() {
     fitTracerToSwapchain();
     present_->setSource(tracer_->accumulation());
     swapchainDirty_ = false;
-    VkExtent2D extent = swapchain_->extent();
-    if (options_.scriptFrames > 0) // the image test checks that its resizes happened
-        std::fprintf(stderr, "prism-view: swapchain %ux%u\n", extent.width, extent.height);
+    driver_.swapchainRebuilt(swapchain_->extent().width, swapchain_->extent().height);
 }
 
 void Viewer::fitTracerToSwapchain() {
@@ -258,14 +247,10 @@ void Viewer::updateCamera(uint32_t frame, double seconds, double scroll) {
     if (options_.benchmarkFrames > 0) {
         uint32_t measured = frame < kBenchmarkWarmupFrames ? 0 : frame - kBenchmarkWarmupFrames;
         fly_.reset(benchmarkCamera(scene_.camera, measured, options_.benchmarkFrames));
-    } else if (options_.scriptFrames > 0) {
-        // Scripted: no input. The soak run orbits; the image test holds the scene's camera.
-        if (options_.scriptOrbit)
-            fly_.reset(benchmarkCamera(scene_.camera, frame % 240, 240));
-    } else {
+    } else if (interactiveRun()) {
         // A slow frame (a shader compile, a reload) must not turn into a long jump.
         fly_.update(flyInput(scroll), std::min(seconds, 0.25));
-    }
+    } // else scripted: the driver's input hook placed the camera, or left it where it was
     if (!sameCamera(fly_.camera(), tracedCamera_)) {
         tracedCamera_ = fly_.camera();
         samples_ = 0; // any change restarts the accumulation
@@ -389,28 +374,27 @@ OverlayStats Viewer::overlayStats() const {
     return s;
 }
 
-bool Viewer::scriptDone(uint32_t frame) const {
-    if (options_.benchmarkFrames > 0)
-        return frame >= kBenchmarkWarmupFrames + options_.benchmarkFrames;
-    if (options_.scriptFrames == 0)
-        return false;
-    if (frame < options_.scriptFrames)
-        return false;
-    // A screenshot waits for a converged accumulation (a resize late in the script restarts
-    // it), but not forever.
-    bool converged = samples_ >= options_.samplesPerPixel && !swapchainDirty_;
-    uint32_t patience = options_.scriptFrames + 2 * options_.samplesPerPixel + 120;
-    if (options_.screenshotPath.empty() || converged)
-        return true;
-    if (frame >= patience)
-        throw Error("the scripted run did not converge to " +
-                    std::to_string(options_.samplesPerPixel) + " samples in " +
-                    std::to_string(frame) + " frames");
-    return false;
+bool Viewer::finished(uint32_t frames) const {
+    if (options_.benchmarkFrames > 0) // the path's length, whatever a driver says
+        return frames >= kBenchmarkWarmupFrames + options_.benchmarkFrames;
+    return driver_.done(frames, *this);
 }
 
 bool Viewer::interactiveRun() const {
-    return options_.benchmarkFrames == 0 && options_.scriptFrames == 0;
+    return options_.benchmarkFrames == 0 && !driver_.scripted();
+}
+
+void Viewer::requestWindowSize(uint32_t width, uint32_t height) {
+    window_.requestSize(width, height);
+}
+
+void Viewer::reloadSceneFrom(const std::filesystem::path &path) {
+    source_ = SceneSource(path);
+    reloadScene();
+}
+
+bool Viewer::converged() const {
+    return samples_ >= options_.samplesPerPixel && !swapchainDirty_;
 }
 
 int Viewer::run() {
@@ -418,7 +402,7 @@ int Viewer::run() {
     BenchmarkReport report;
     Timer frameTimer, benchmarkTimer;
     std::vector<double> frameStarts;
-    long startRss = residentKiB();
+    driver_.begin();
     uint32_t frame = 0;
     while (!window_.shouldClose()) {
         bool idle = samples_ >= options_.samplesPerPixel;
@@ -430,9 +414,7 @@ int Viewer::run() {
         double frameMs = frameTimer.elapsedMs();
         frameTimer.reset();
 
-        for (const ScriptedResize &resize : options_.resizes)
-            if (resize.frame == frame)
-                window_.requestSize(resize.width, resize.height);
+        driver_.beforeFrame(frame, *this);
         VkExtent2D size = window_.framebufferSize();
         if (size.width == 0 || size.height == 0) {
             glfwWaitEvents(); // minimised
@@ -447,9 +429,8 @@ int Viewer::run() {
             handleKeys(events.keysPressed);
             if (source_.changedOnDisk())
                 reloadScene();
-        } else if (!options_.reloadPath.empty() && frame == options_.reloadFrame) {
-            source_ = SceneSource(options_.reloadPath);
-            reloadScene();
+        } else {
+            driver_.input(frame, *this);
         }
         updateCamera(frame, frameMs / 1000.0, events.scrollY);
 
@@ -480,10 +461,9 @@ int Viewer::run() {
             if (accumulating)
                 fullFrameMs_ = frameMs;
         }
-        if (options_.reportEvery > 0 && frame % options_.reportEvery == 0)
-            std::fprintf(stderr, "prism-view: frame %u rss_kib %ld\n", frame, residentKiB());
+        driver_.afterFrame(frame);
         frame += 1;
-        if (scriptDone(frame))
+        if (finished(frame))
             break;
     }
     drainFrames();
@@ -504,11 +484,7 @@ int Viewer::run() {
         std::printf("%s\n", benchmarkJson(report).c_str());
         std::fflush(stdout);
     }
-    if (!options_.screenshotPath.empty())
-        saveScreenshot(options_.screenshotPath);
-    if (options_.reportEvery > 0)
-        std::fprintf(stderr, "prism-view: frames %u rss_kib start %ld end %ld\n", frame, startRss,
-                     residentKiB());
+    driver_.end(frame, *this);
     if (context_->validationMessageCount() > 0) {
         std::fprintf(stderr, "prism-view: %u Vulkan validation messages (printed above)\n",
                      context_->validationMessageCount());

@@ -1,6 +1,7 @@
 #pragma once
 // The viewer's frame loop: window, swapchain and frames in flight around one RayTracer, the
-// fly camera, progressive accumulation, the overlay, screenshots and scene reloading.
+// fly camera, progressive accumulation, the overlay, screenshots and scene reloading. Scripted
+// runs (tests, soak) drive it only through a ViewDriver's hooks.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -15,6 +16,7 @@
 #include "present/present_pass.h"
 #include "render/ray_tracer.h"
 #include "scene_source.h"
+#include "view_driver.h"
 #include "view_options.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
@@ -25,11 +27,11 @@
 
 namespace prism {
 
-class Viewer {
+class Viewer final : private ViewControls {
 public:
     // Opens the window and loads the scene; throws prism::Error (FileError for the scene)
-    // with a message saying what is missing or wrong.
-    explicit Viewer(const ViewOptions &options);
+    // with a message saying what is missing or wrong. `driver` must outlive the viewer.
+    Viewer(const ViewOptions &options, ViewDriver &driver);
     ~Viewer();
     Viewer(const Viewer &) = delete;
     Viewer &operator=(const Viewer &) = delete;
@@ -60,12 +62,21 @@ private:
     FlyInput flyInput(double scroll);
     void updateCamera(uint32_t frame, double seconds, double scroll);
     bool drawFrame(bool measured);
-    void saveScreenshot(const std::filesystem::path &base);
     OverlayStats overlayStats() const;
-    bool scriptDone(uint32_t frame) const;
+    bool finished(uint32_t frames) const;
     bool interactiveRun() const; // no script, no benchmark: input drives the camera
 
+    // ViewControls, for the driver.
+    void requestWindowSize(uint32_t width, uint32_t height) override;
+    void reloadSceneFrom(const std::filesystem::path &path) override;
+    const Camera &sceneCamera() const override { return scene_.camera; }
+    void placeCamera(const Camera &camera) override { fly_.reset(camera); }
+    void saveScreenshot(const std::filesystem::path &base) override; // also F12
+    bool converged() const override;
+    uint32_t samplesTarget() const override { return options_.samplesPerPixel; }
+
     ViewOptions options_;
+    ViewDriver &driver_;
     GlfwSession glfw_;
     Window window_;
     std::unique_ptr<vk::Context> context_;

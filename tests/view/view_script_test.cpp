@@ -1,0 +1,153 @@
+// The hidden options of scripted runs and the driver that runs them, without a window: a fake
+// viewer records what the driver asks of it, frame by frame.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "benchmark.h"
+#include "core/error.h"
+#include "fly_camera.h"
+#include "script_driver.h"
+#include "view_options.h"
+
+namespace prism {
+namespace {
+
+// Parses a prism-view command line; `args` follow the program name.
+ViewScript parseScript(std::vector<std::string> args, ViewOptions *optionsOut = nullptr) {
+    args.insert(args.begin(), "prism-view");
+    std::vector<char *> argv;
+    for (std::string &arg : args)
+        argv.push_back(arg.data());
+    ViewOptions options;
+    ViewScript script;
+    int exitCode = 0;
+    EXPECT_TRUE(parseViewOptions(int(argv.size()), argv.data(), options, script, exitCode));
+    if (optionsOut)
+        *optionsOut = options;
+    return script;
+}
+
+class FakeView : public ViewControls {
+public:
+    void requestWindowSize(uint32_t width, uint32_t height) override {
+        resizes.push_back(std::to_string(width) + "x" + std::to_string(height));
+    }
+    void reloadSceneFrom(const std::filesystem::path &path) override { reloads.push_back(path); }
+    const Camera &sceneCamera() const override { return scene; }
+    void placeCamera(const Camera &camera) override { placed.push_back(camera); }
+    void saveScreenshot(const std::filesystem::path &base) override { screenshots.push_back(base); }
+    bool converged() const override { return isConverged; }
+    uint32_t samplesTarget() const override { return 4; }
+
+    Camera scene;
+    bool isConverged = false;
+    std::vector<std::string> resizes;
+    std::vector<std::filesystem::path> reloads, screenshots;
+    std::vector<Camera> placed;
+};
+
+TEST(ViewScript, HiddenOptionsParseIntoTheScriptNotTheUserOptions) {
+    ViewOptions options;
+    ViewScript script =
+        parseScript({"s.scene", "--size", "320x240", "--script-frames", "10", "--resize-at",
+                     "3:200x150", "--resize-at", "6:320x240", "--script-reload", "4:b.scene",
+                     "--screenshot", "out.exr", "--script-orbit", "--report-every", "250"},
+                    &options);
+    EXPECT_EQ(options.width, 320u);
+    EXPECT_EQ(script.frames, 10u);
+    ASSERT_EQ(script.resizes.size(), 2u);
+    EXPECT_EQ(script.resizes[0].frame, 3u);
+    EXPECT_EQ(script.resizes[0].width, 200u);
+    EXPECT_EQ(script.resizes[0].height, 150u);
+    EXPECT_EQ(script.resizes[1].frame, 6u);
+    EXPECT_EQ(script.reloadFrame, 4u);
+    EXPECT_EQ(script.reloadPath, "b.scene");
+    EXPECT_EQ(script.screenshotPath, "out.exr");
+    EXPECT_TRUE(script.orbit);
+    EXPECT_EQ(script.reportEvery, 250u);
+    EXPECT_FALSE(script.empty());
+    EXPECT_TRUE(parseScript({"s.scene"}).empty());
+}
+
+TEST(ViewScript, MalformedHiddenOptionsSayWhatIsWrong) {
+    EXPECT_THROW(parseScript({"s.scene", "--resize-at", "3x200"}), Error);
+    EXPECT_THROW(parseScript({"s.scene", "--script-reload", "b.scene"}), Error);
+    EXPECT_THROW(parseScript({"s.scene", "--screenshot", "out.exr"}), Error);
+}
+
+TEST(ScriptDriver, AUserSessionGetsTheNullDriver) {
+    std::unique_ptr<ViewDriver> driver = makeViewDriver(ViewScript{});
+    EXPECT_EQ(dynamic_cast<ScriptDriver *>(driver.get()), nullptr);
+    EXPECT_FALSE(driver->scripted());
+    ViewScript reportOnly;
+    reportOnly.reportEvery = 10; // RSS reports also work in a user's session
+    driver = makeViewDriver(reportOnly);
+    EXPECT_NE(dynamic_cast<ScriptDriver *>(driver.get()), nullptr);
+    EXPECT_FALSE(driver->scripted());
+}
+
+TEST(ScriptDriver, ResizesAndReloadsAtTheirFrames) {
+    ViewScript script;
+    script.frames = 10;
+    script.resizes = {{3, 200, 150}, {6, 320, 240}};
+    script.reloadFrame = 4;
+    script.reloadPath = "b.scene";
+    ScriptDriver driver(script);
+    FakeView view;
+    EXPECT_TRUE(driver.scripted());
+    for (uint32_t frame = 0; frame < 10; ++frame) {
+        driver.beforeFrame(frame, view);
+        driver.input(frame, view);
+        if (frame == 3) {
+            EXPECT_EQ(view.resizes, std::vector<std::string>{"200x150"});
+        }
+        EXPECT_EQ(view.reloads.size(), frame < 4 ? 0u : 1u) << "frame " << frame;
+    }
+    EXPECT_EQ(view.resizes, (std::vector<std::string>{"200x150", "320x240"}));
+    EXPECT_EQ(view.reloads, std::vector<std::filesystem::path>{"b.scene"});
+    EXPECT_TRUE(view.placed.empty()) << "without --script-orbit the scene's camera is held";
+}
+
+TEST(ScriptDriver, OrbitPlacesTheBenchmarkPathEveryFrame) {
+    ViewScript script;
+    script.frames = 300;
+    script.orbit = true;
+    ScriptDriver driver(script);
+    FakeView view;
+    view.scene.eye = {0.0f, 2.0f, 8.0f};
+    view.scene.look = {0.0f, 1.0f, 0.0f};
+    for (uint32_t frame = 0; frame < 250; ++frame)
+        driver.input(frame, view);
+    ASSERT_EQ(view.placed.size(), 250u);
+    EXPECT_TRUE(sameCamera(view.placed[7], benchmarkCamera(view.scene, 7, 240)));
+    EXPECT_TRUE(sameCamera(view.placed[245], benchmarkCamera(view.scene, 5, 240)));
+}
+
+TEST(ScriptDriver, EndsAfterItsFramesAndWaitsForAConvergedScreenshot) {
+    ViewScript plain;
+    plain.frames = 6;
+    ScriptDriver run(plain);
+    FakeView view;
+    EXPECT_FALSE(run.done(5, view));
+    EXPECT_TRUE(run.done(6, view)) << "no screenshot: convergence does not matter";
+
+    ViewScript shot = plain;
+    shot.screenshotPath = "out.exr";
+    ScriptDriver driver(shot);
+    EXPECT_FALSE(driver.done(6, view));
+    view.isConverged = true;
+    EXPECT_TRUE(driver.done(7, view));
+    driver.end(7, view);
+    EXPECT_EQ(view.screenshots, std::vector<std::filesystem::path>{"out.exr"});
+
+    // Not forever: frames + 2 * spp + 120.
+    view.isConverged = false;
+    EXPECT_FALSE(driver.done(6 + 2 * 4 + 119, view));
+    EXPECT_THROW(driver.done(6 + 2 * 4 + 120, view), Error);
+}
+
+} // namespace
+} // namespace prism
