@@ -25,37 +25,39 @@ vec2 planeUV(vec3 p, vec3 n) {
 // to |P|, which is what the relative ray offset assumes.
 Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
     Surface s;
-    if (HAS_SPHERES && hit.kind == kHitSphere) {
-        vec4 cr = spheres[hit.index].centerRadius;
+    if (HAS_SPHERES && hit.kind == kKindSphere) {
+        GpuSphere sphere = sphereAt(hit.index);
+        vec4 cr = sphere.centerRadius;
         vec3 n = normalize(origin + hit.t * dir - cr.xyz);
         s.position = cr.xyz + cr.w * n;
         s.geometricNormal = n;
         s.shadingNormal = n;
         s.uv = vec2(0.5 + atan(n.z, n.x) / (2.0 * kPi), 0.5 + asin(clamp(n.y, -1.0, 1.0)) / kPi);
-        s.material = spheres[hit.index].material.x;
-    } else if (HAS_PLANES && hit.kind == kHitPlane) {
-        vec4 no = planes[hit.index].normalOffset;
+        s.material = sphereMaterial(sphere);
+    } else if (HAS_PLANES && hit.kind == kKindPlane) {
+        GpuPlane plane = planeAt(hit.index);
+        vec4 no = plane.normalOffset;
         vec3 p = origin + hit.t * dir;
         s.position = p - (dot(no.xyz, p) - no.w) * no.xyz;
         s.geometricNormal = no.xyz;
         s.shadingNormal = no.xyz;
         s.uv = HAS_TEXTURES ? planeUV(s.position, no.xyz) : vec2(0.0);
-        s.material = uint(planes[hit.index].point.w);
+        s.material = planeMaterial(plane);
     } else {
-        GpuTriangle tri = triangles[hit.index];
+        GpuTriangle tri = triangleAt(hit.index);
         float b1 = hit.b12.x, b2 = hit.b12.y, b0 = 1.0 - b1 - b2;
         s.position = b0 * tri.v0.xyz + b1 * tri.v1.xyz + b2 * tri.v2.xyz;
         s.geometricNormal = normalize(cross(tri.v1.xyz - tri.v0.xyz, tri.v2.xyz - tri.v0.xyz));
         s.shadingNormal = s.geometricNormal;
         s.uv = vec2(b1, b2);
         if (HAS_VERTEX_NORMALS || HAS_TEXTURES) {
-            GpuTriangleShading sh = triangleShading[hit.index];
-            if (HAS_VERTEX_NORMALS && sh.n0.w != 0.0)
+            GpuTriangleShading sh = triangleShadingAt(hit.index);
+            if (HAS_VERTEX_NORMALS && shadingHasNormals(sh))
                 s.shadingNormal = normalize(b0 * sh.n0.xyz + b1 * sh.n1.xyz + b2 * sh.n2.xyz);
-            if (HAS_TEXTURES && sh.n1.w != 0.0)
+            if (HAS_TEXTURES && shadingHasUVs(sh))
                 s.uv = b0 * sh.uv01.xy + b1 * sh.uv01.zw + b2 * sh.uv2.xy;
         }
-        s.material = uint(tri.v0.w);
+        s.material = triangleMaterial(tri);
     }
     return s;
 }
@@ -63,8 +65,9 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
 // Bilinear lookup with wrap-around; v = 0 is the image's bottom row, texels are stored top row
 // first.
 vec3 textureColor(uint textureIndex, vec2 uv) {
-    uvec4 info = textures[textureIndex].info;
-    int w = int(info.y), h = int(info.z);
+    GpuTexture texture = textureAt(textureIndex);
+    int w = int(textureWidth(texture)), h = int(textureHeight(texture));
+    uint first = textureFirstTexel(texture);
     vec2 xy = vec2(uv.x * float(w), uv.y * float(h)) - 0.5;
     vec2 base = floor(xy);
     vec2 f = xy - base;
@@ -74,8 +77,8 @@ vec3 textureColor(uint textureIndex, vec2 uv) {
     int x1 = (x0 + 1) % w, y1 = (y0 + 1) % h;
     // Bottom-based rows map to stored rows h-1-y.
     uint rowA = uint(h - 1 - y0) * uint(w), rowB = uint(h - 1 - y1) * uint(w);
-    vec4 c00 = textureTexel(info.x + rowA + uint(x0)), c10 = textureTexel(info.x + rowA + uint(x1));
-    vec4 c01 = textureTexel(info.x + rowB + uint(x0)), c11 = textureTexel(info.x + rowB + uint(x1));
+    vec4 c00 = textureTexel(first + rowA + uint(x0)), c10 = textureTexel(first + rowA + uint(x1));
+    vec4 c01 = textureTexel(first + rowB + uint(x0)), c11 = textureTexel(first + rowB + uint(x1));
     return mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y).rgb;
 }
 

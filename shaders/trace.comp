@@ -12,8 +12,9 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "shared/gpu_types.h"
+#include "shared/trace_interface.h"
 #include "shared/sampling.h"
-#include "bindings.glsl"
+#include "trace_bindings.glsl"
 #include "loop_budget.glsl"
 #include "intersect.glsl"
 #include "traverse.glsl"
@@ -26,7 +27,7 @@ uint gSecondaryRays = 0u;
 void cameraRay(vec2 pixelPosition, out vec3 origin, out vec3 dir) {
     vec2 uv = pixelPosition / vec2(frame.image.xy);
     float x = 2.0 * uv.x - 1.0, y = 1.0 - 2.0 * uv.y;
-    if (frame.eye.w != 0.0) {
+    if (isParallelCamera(frame)) {
         origin = frame.eye.xyz + x * frame.du.xyz + y * frame.dv.xyz;
         dir = frame.forward.xyz;
     } else {
@@ -36,7 +37,7 @@ void cameraRay(vec2 pixelPosition, out vec3 origin, out vec3 dir) {
 }
 
 vec2 samplePosition(uvec2 pixel, uint pixelIndex, uint sampleIndex) {
-    uint spp = frame.image.w;
+    uint spp = frameSamplesPerPixel(frame);
     if (spp == 1u)
         return vec2(pixel) + 0.5;
     uint columns = strataColumns(spp), rows = strataRows(spp);
@@ -49,24 +50,25 @@ vec2 samplePosition(uvec2 pixel, uint pixelIndex, uint sampleIndex) {
 // Ambient + Blinn-Phong from every light whose shadow ray is clear.
 vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color, GpuMaterial m,
                  uint pixelIndex, uint sampleIndex, uint depth) {
-    vec3 result = m.colorAmbient.a * color * header.ambient.rgb;
-    uint lightCount = header.counts.w;
-    for (uint l = 0u; l < lightCount; ++l) {
+    vec3 result = materialAmbient(m) * color * header.ambient.rgb;
+    uint lights = headerLightCount(header);
+    for (uint l = 0u; l < lights; ++l) {
         if (!loopTick()) break;
-        GpuLight light = lights[l];
-        vec3 toLight = normalize(light.positionRadius.xyz - s.position);
+        GpuLight light = lightAt(l);
+        vec3 toLight = normalize(lightPosition(light) - s.position);
         float nDotL = dot(n, toLight);
         if (nDotL > 0.0) {
             bool visible = true;
             if (HAS_SHADOWS) {
-                vec3 target = light.positionRadius.xyz;
-                if (HAS_AREA_LIGHTS && light.positionRadius.w > 0.0) {
-                    uint dim = PRISM_DIM_LIGHT_BASE + 2u * ((depth - 1u) * lightCount + l);
-                    vec2 u = stratifiedPair(pixelIndex, sampleIndex, frame.image.w, dim);
+                vec3 target = lightPosition(light);
+                if (HAS_AREA_LIGHTS && lightRadius(light) > 0.0) {
+                    uint dim = PRISM_DIM_LIGHT_BASE + 2u * ((depth - 1u) * lights + l);
+                    vec2 u = stratifiedPair(pixelIndex, sampleIndex, frameSamplesPerPixel(frame),
+                                            dim);
                     float z = 1.0 - 2.0 * u.x;
                     float rxy = sqrt(max(0.0, 1.0 - z * z));
                     float phi = 2.0 * kPi * u.y;
-                    target += light.positionRadius.w * vec3(rxy * cos(phi), rxy * sin(phi), z);
+                    target += lightRadius(light) * vec3(rxy * cos(phi), rxy * sin(phi), z);
                 }
                 // A target below the surface's own horizon (an area-light sample, or a point
                 // light seen through an interpolated normal) is shadowed by the surface itself.
@@ -82,10 +84,10 @@ vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color,
             if (visible) {
                 vec3 halfway = normalize(toLight + view);
                 // pow(0, 0) is undefined in GLSL; shininess 0 means a constant 1, as in C++.
-                float specular = m.lighting.z > 0.0 ? pow(max(0.0, dot(n, halfway)), m.lighting.z)
-                                                    : 1.0;
-                result += light.color.rgb *
-                          (m.lighting.x * color * nDotL + m.lighting.y * specular);
+                float shininess = materialShininess(m);
+                float specular = shininess > 0.0 ? pow(max(0.0, dot(n, halfway)), shininess) : 1.0;
+                result += lightColor(light) *
+                          (materialDiffuse(m) * color * nDotL + materialSpecular(m) * specular);
             }
         }
         loopSync();
@@ -109,7 +111,7 @@ void pushRay(vec3 origin, vec3 dir, vec3 weight, uint depth) {
 }
 
 vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
-    uint maxDepth = frame.control.x;
+    uint maxDepth = frameMaxDepth(frame);
     vec3 radiance = vec3(0.0);
     pushRay(origin, dir, vec3(1.0), 1u);
     while (gStackSize > 0u) {
@@ -122,27 +124,27 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
             radiance += ray.weight * header.background.rgb;
         } else {
             Surface s = surfaceAt(ray.origin, ray.dir, hit);
-            GpuMaterial m = materials[s.material];
+            GpuMaterial m = materialAt(s.material);
             vec3 view = -ray.dir;
             vec3 ng = dot(s.geometricNormal, view) < 0.0 ? -s.geometricNormal : s.geometricNormal;
             vec3 n = dot(s.shadingNormal, view) < 0.0 ? -s.shadingNormal : s.shadingNormal;
-            vec3 color = m.colorAmbient.rgb;
-            if (HAS_TEXTURES && m.optics.z >= 0.0)
-                color *= textureColor(uint(m.optics.z), s.uv);
+            vec3 color = materialColor(m);
+            if (HAS_TEXTURES && materialHasTexture(m))
+                color *= textureColor(materialTexture(m), s.uv);
             radiance += ray.weight * directLight(s, ng, n, view, color, m, pixelIndex,
                                                  sampleIndex, ray.depth);
             if (ray.depth < maxDepth) {
                 vec3 reflected = reflect(ray.dir, n);
-                if (HAS_REFLECTION && m.lighting.w > 0.0)
+                if (HAS_REFLECTION && materialReflect(m) > 0.0)
                     pushRay(offsetOrigin(s.position, ng, reflected), reflected,
-                            ray.weight * m.lighting.w, ray.depth + 1u);
-                if (HAS_TRANSMISSION && m.optics.x > 0.0) {
-                    float ior = m.optics.y;
+                            ray.weight * materialReflect(m), ray.depth + 1u);
+                if (HAS_TRANSMISSION && materialTransmit(m) > 0.0) {
+                    float ior = materialIor(m);
                     bool entering = dot(ray.dir, s.geometricNormal) < 0.0;
                     float eta = entering ? 1.0 / ior : ior;
                     float cosI = -dot(ray.dir, n);
                     float k = 1.0 - eta * eta * (1.0 - cosI * cosI);
-                    vec3 weight = ray.weight * m.optics.x;
+                    vec3 weight = ray.weight * materialTransmit(m);
                     if (k < 0.0) { // total internal reflection
                         pushRay(offsetOrigin(s.position, ng, reflected), reflected, weight,
                                 ray.depth + 1u);
@@ -164,17 +166,22 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
     return radiance;
 }
 
-void addCounter(uint index, uint value) {
-    uint total = subgroupAdd(value);
-    if (subgroupElect() && total != 0u)
-        atomicAdd(counters[index], uint64_t(total));
+// One atomic per subgroup and counter: the lanes' counts are summed first.
+void addCounts(uint primary, uint shadow, uint secondary, uint overBudget) {
+    uvec4 total = subgroupAdd(uvec4(primary, shadow, secondary, overBudget));
+    if (subgroupElect()) {
+        if (total.x != 0u) atomicAdd(stats.primaryRays, uint64_t(total.x));
+        if (total.y != 0u) atomicAdd(stats.shadowRays, uint64_t(total.y));
+        if (total.z != 0u) atomicAdd(stats.secondaryRays, uint64_t(total.z));
+        if (total.w != 0u) atomicAdd(stats.overBudgetPixels, uint64_t(total.w));
+    }
 }
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     bool inside = all(lessThan(pixel, frame.image.xy));
     uint pixelIndex = pixel.y * frame.image.x + pixel.x;
-    uint sampleIndex = frame.image.z;
+    uint sampleIndex = frameSampleIndex(frame);
     vec3 radiance = vec3(0.0);
     if (inside) {
         vec3 origin, dir;
@@ -196,8 +203,5 @@ void main() {
             imageStore(aovImage, ivec2(pixel), aov);
         }
     }
-    addCounter(0u, inside ? 1u : 0u);
-    addCounter(2u, gShadowRays);
-    addCounter(4u, gSecondaryRays);
-    addCounter(6u, gOverBudget ? 1u : 0u);
+    addCounts(inside ? 1u : 0u, gShadowRays, gSecondaryRays, gOverBudget ? 1u : 0u);
 }

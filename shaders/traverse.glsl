@@ -1,32 +1,33 @@
 // Finding what a ray hits: infinite planes by brute force, everything else through the regular
-// grid with 3D-DDA (Amanatides & Woo 1987).
-
-const uint kHitSphere = 0u, kHitPlane = 1u, kHitTriangle = 2u;
+// grid with 3D-DDA (Amanatides & Woo 1987). One walk (trace_ray.glsl) serves both closest-hit
+// rays and any-hit (shadow) rays.
 
 struct Hit {
     float t;
-    uint kind;
-    uint index;
-    vec2 b12; // triangle barycentrics of p1 and p2
+    uint kind;  // kKindSphere, kKindTriangle, kKindPlane or kKindNone
+    uint index; // within its kind's array
+    vec2 b12;   // triangle barycentrics of p1 and p2
 };
 
-// Tests primitive `id` (grid id space) and records it in `hit` when closer than hit.t.
+// Tests the primitive with grid id `id` and records it in `hit` when closer than hit.t.
 void testPrimitive(uint id, vec3 origin, vec3 dir, WatertightRay wray, inout Hit hit) {
     float t;
-    uint sphereCount = header.counts.x;
-    if (HAS_SPHERES && id < sphereCount) {
-        if (intersectSphere(origin, dir, sphereCenterRadius(id), hit.t, t)) {
+    if (HAS_SPHERES && id < header.idEnd[kKindSphere]) {
+        uint sphere = id; // the first kind: its ids start at 0
+        if (intersectSphere(origin, dir, sphereCenterRadius(sphere), hit.t, t)) {
             hit.t = t;
-            hit.kind = kHitSphere;
-            hit.index = id;
+            hit.kind = kKindSphere;
+            hit.index = sphere;
         }
-    } else if (HAS_TRIANGLES) {
-        uint tri = id - sphereCount;
+    } else if (HAS_TRIANGLES) { // the last kind: every id past the spheres
+        // primitiveIdFirst(header.idEnd, kKindTriangle), written with a constant index: lavapipe
+        // then loads one word, not the whole idEnd vector, per test (that cost 7% on objects).
+        uint tri = id - header.idEnd[kKindTriangle - 1u];
         vec2 b12;
         if (intersectTriangle(origin, wray, triangleVertex(tri, 0u), triangleVertex(tri, 1u),
                               triangleVertex(tri, 2u), hit.t, t, b12)) {
             hit.t = t;
-            hit.kind = kHitTriangle;
+            hit.kind = kKindTriangle;
             hit.index = tri;
             hit.b12 = b12;
         }
@@ -78,86 +79,20 @@ uint cellIndex(ivec3 cell) {
     return uint(cell.x) + header.gridRes.x * (uint(cell.y) + header.gridRes.y * uint(cell.z));
 }
 
-// Closest hit with 0 < t < tMax. A grid hit is accepted only once the walk has reached the
-// cell where it lies (t <= the cell's exit), so the first accepted hit is the nearest.
-bool traceClosest(vec3 origin, vec3 dir, float tMax, out Hit hit) {
-    hit.t = tMax;
-    hit.kind = 0xFFFFFFFFu;
-    hit.index = 0u;
-    hit.b12 = vec2(0.0);
-    if (HAS_PLANES) {
-        for (uint i = 0u; i < header.counts.y; ++i) {
-            if (!loopTick()) break;
-            float t;
-            if (intersectPlane(origin, dir, planes[i].normalOffset, hit.t, t)) {
-                hit.t = t;
-                hit.kind = kHitPlane;
-                hit.index = i;
-            }
-        }
-    }
-    if (HAS_SPHERES || HAS_TRIANGLES) {
-        vec3 invDir = 1.0 / dir;
-        float tEnter, tExit;
-        if (clipToGrid(origin, invDir, tEnter, tExit) && tEnter < hit.t) {
-            WatertightRay wray = makeWatertightRay(dir);
-            GridWalk walk = startWalk(origin, dir, invDir, tEnter);
-            bool walking = true;
-            while (walking) {
-                if (!loopTick()) break;
-                float tCellExit = min(min(walk.tNext.x, walk.tNext.y), walk.tNext.z);
-                uint cell = cellIndex(walk.cell);
-                uint end = cellStartAt(cell + 1u);
-                for (uint k = cellStartAt(cell); k < end; ++k) {
-                    if (!loopTick()) break;
-                    testPrimitive(cellPrimitiveAt(k), origin, dir, wray, hit);
-                }
-                // Stop once the best hit lies in this cell (or a plane hit comes first).
-                walking = hit.t > tCellExit && tCellExit < tExit && stepWalk(walk) &&
-                          !gOverBudget;
-                loopSync();
-            }
-            loopSync();
-        }
-    }
-    return hit.kind != 0xFFFFFFFFu;
-}
+// One walk for both kinds of query (trace_ray.glsl), planes first, then the grid.
+#define TRACE_RAY_NAME traceClosest
+#define TRACE_RAY_ANY_HIT 0
+#include "trace_ray.glsl"
+#undef TRACE_RAY_NAME
+#undef TRACE_RAY_ANY_HIT
+#define TRACE_RAY_NAME traceAnyHit
+#define TRACE_RAY_ANY_HIT 1
+#include "trace_ray.glsl"
+#undef TRACE_RAY_NAME
+#undef TRACE_RAY_ANY_HIT
 
-// True when anything lies on the open segment 0 < t < tMax (shadow rays: any hit will do).
+// True when anything lies on the open segment 0 < t < tMax.
 bool traceOccluded(vec3 origin, vec3 dir, float tMax) {
     Hit hit;
-    hit.t = tMax;
-    hit.kind = 0xFFFFFFFFu;
-    if (HAS_PLANES) {
-        for (uint i = 0u; i < header.counts.y; ++i) {
-            if (!loopTick()) break;
-            float t;
-            if (intersectPlane(origin, dir, planes[i].normalOffset, tMax, t))
-                return true;
-        }
-    }
-    if (HAS_SPHERES || HAS_TRIANGLES) {
-        vec3 invDir = 1.0 / dir;
-        float tEnter, tExit;
-        if (clipToGrid(origin, invDir, tEnter, tExit) && tEnter < tMax) {
-            WatertightRay wray = makeWatertightRay(dir);
-            GridWalk walk = startWalk(origin, dir, invDir, tEnter);
-            bool walking = true;
-            while (walking) {
-                if (!loopTick()) break;
-                float tCellExit = min(min(walk.tNext.x, walk.tNext.y), walk.tNext.z);
-                uint cell = cellIndex(walk.cell);
-                uint end = cellStartAt(cell + 1u);
-                for (uint k = cellStartAt(cell); k < end && hit.kind == 0xFFFFFFFFu; ++k) {
-                    if (!loopTick()) break;
-                    testPrimitive(cellPrimitiveAt(k), origin, dir, wray, hit);
-                }
-                walking = hit.kind == 0xFFFFFFFFu && tCellExit < min(tExit, tMax) &&
-                          stepWalk(walk) && !gOverBudget;
-                loopSync();
-            }
-            loopSync();
-        }
-    }
-    return hit.kind != 0xFFFFFFFFu;
+    return traceAnyHit(origin, dir, tMax, hit);
 }

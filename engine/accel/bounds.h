@@ -5,8 +5,6 @@
 
 #include <glm/glm.hpp>
 
-#include "scene/scene.h"
-
 namespace prism {
 
 struct Aabb {
@@ -24,17 +22,5 @@ struct Aabb {
     }
     glm::dvec3 extent() const { return max - min; }
 };
-
-inline Aabb sphereBounds(const Sphere &s) {
-    glm::dvec3 c(s.center), r(double(s.radius));
-    return {c - r, c + r};
-}
-
-inline Aabb triangleBounds(const Triangle &t) {
-    Aabb b;
-    for (const glm::vec3 &p : t.p)
-        b.grow(glm::dvec3(p));
-    return b;
-}
 
 } // namespace prism

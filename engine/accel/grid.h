@@ -34,7 +34,7 @@ struct Grid {
     glm::ivec3 resolution{1};
     glm::vec3 cellSize{1.0f};
     // Cell (x, y, z) has index x + res.x * (y + res.y * z); its primitives are
-    // cellPrimitives[cellStart[i] .. cellStart[i + 1]). Ids: spheres first, then triangles.
+    // cellPrimitives[cellStart[i] .. cellStart[i + 1]), ids as in scene/primitive_ids.h.
     std::vector<uint32_t> cellStart;
     std::vector<uint32_t> cellPrimitives;
 

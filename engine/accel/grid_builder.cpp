@@ -6,20 +6,18 @@
 #include <utility>
 
 #include "accel/bounds.h"
+#include "accel/finite_primitives.h"
 #include "accel/grid.h"
 #include "accel/grid_resolution.h"
-#include "accel/overlap_tests.h"
 #include "core/error.h"
 
 namespace prism {
 namespace {
 
-Aabb finiteBounds(const Scene &scene) {
+Aabb finiteBounds(const FinitePrimitives &primitives) {
     Aabb b;
-    for (const Sphere &s : scene.spheres)
-        b.grow(sphereBounds(s));
-    for (const Triangle &t : scene.triangles)
-        b.grow(triangleBounds(t));
+    for (uint32_t id = 0; id < primitives.count(); ++id)
+        b.grow(primitives.bounds(id));
     return b;
 }
 
@@ -37,7 +35,7 @@ Aabb paddedBounds(Aabb b) {
     return {b.min - pad, b.max + pad};
 }
 
-// Primitive ids are spheres, then triangles; pairs list each (cell, id) overlap once.
+// Pairs list each (cell, primitive id) overlap once; ids as in scene/primitive_ids.h.
 class CellBinner {
 public:
     explicit CellBinner(const Grid &grid) : grid_(grid) {
@@ -49,7 +47,8 @@ public:
         slack_ = 1e-4 * cell + glm::dvec3(4e-7 * largest);
     }
 
-    template <typename Overlaps> void bin(uint32_t id, const Aabb &bounds, Overlaps overlaps) {
+    void bin(uint32_t id, const FinitePrimitives &primitives) {
+        Aabb bounds = primitives.bounds(id);
         glm::ivec3 lo = cellOf(bounds.min - slack_), hi = cellOf(bounds.max + slack_);
         for (int z = lo.z; z <= hi.z; ++z)
             for (int y = lo.y; y <= hi.y; ++y)
@@ -57,7 +56,7 @@ public:
                     glm::dvec3 cmin = glm::dvec3(grid_.boundsMin) +
                                       glm::dvec3(x, y, z) * glm::dvec3(grid_.cellSize);
                     glm::dvec3 cmax = cmin + glm::dvec3(grid_.cellSize);
-                    if (overlaps(cmin - slack_, cmax + slack_))
+                    if (primitives.overlapsBox(id, cmin - slack_, cmax + slack_))
                         pairs_.emplace_back(grid_.cellIndex({x, y, z}), id);
                 }
     }
@@ -98,7 +97,8 @@ void fillCells(Grid &grid, std::vector<std::pair<uint32_t, uint32_t>> &pairs) {
 } // namespace
 
 Grid buildGrid(const Scene &scene, const GridOptions &options) {
-    Aabb bounds = paddedBounds(finiteBounds(scene));
+    FinitePrimitives finite(scene);
+    Aabb bounds = paddedBounds(finiteBounds(finite));
     Grid grid;
     grid.boundsMin = glm::vec3(bounds.min);
     grid.boundsMax = glm::vec3(bounds.max);
@@ -109,9 +109,7 @@ Grid buildGrid(const Scene &scene, const GridOptions &options) {
         if (double(grid.boundsMax[a]) < bounds.max[a])
             grid.boundsMax[a] = std::nextafter(grid.boundsMax[a], INFINITY);
     }
-    uint64_t primitives = scene.finitePrimitiveCount();
-    if (primitives >= (uint64_t(1) << 32))
-        throw Error("scene has more than 2^32 spheres and triangles");
+    uint32_t primitives = finite.count();
     switch (options.mode) {
     case GridOptions::Mode::Off:
         grid.resolution = glm::ivec3(1);
@@ -139,20 +137,8 @@ Grid buildGrid(const Scene &scene, const GridOptions &options) {
     }
 
     CellBinner binner(grid);
-    uint32_t id = 0;
-    for (const Sphere &s : scene.spheres) {
-        glm::dvec3 c(s.center);
-        double r = s.radius;
-        binner.bin(id++, sphereBounds(s), [&](const glm::dvec3 &lo, const glm::dvec3 &hi) {
-            return sphereOverlapsBox(c, r, lo, hi);
-        });
-    }
-    for (const Triangle &t : scene.triangles) {
-        glm::dvec3 p0(t.p[0]), p1(t.p[1]), p2(t.p[2]);
-        binner.bin(id++, triangleBounds(t), [&](const glm::dvec3 &lo, const glm::dvec3 &hi) {
-            return triangleOverlapsBox(p0, p1, p2, lo, hi);
-        });
-    }
+    for (uint32_t id = 0; id < primitives; ++id)
+        binner.bin(id, finite);
     fillCells(grid, binner.pairs());
     return grid;
 }

@@ -20,7 +20,7 @@ void PresentPass::buildPipeline(const vk::Swapchain &swapchain) {
         std::span<const uint32_t>(kFullscreenVertSpv, sizeof(kFullscreenVertSpv) / 4);
     desc.fragmentSpirv = std::span<const uint32_t>(kPresentFragSpv, sizeof(kPresentFragSpv) / 4);
     desc.bindings = {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
-    desc.fragmentSpecialization = {swapchain.encodesSrgb() ? 0u : 1u};
+    desc.fragmentSpecialization = {{0u, swapchain.encodesSrgb() ? 0u : 1u}}; // present.frag
     desc.pushConstantBytes = 2 * sizeof(float); // image size / framebuffer size
     desc.renderPass = renderPass_->handle();
     pipeline_ = std::make_unique<vk::GraphicsPipeline>(context_, desc);

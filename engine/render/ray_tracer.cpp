@@ -2,137 +2,63 @@
 
 #include <algorithm>
 #include <cstring>
-#include <iterator>
 #include <string>
 
 #include "core/error.h"
 #include "core/timer.h"
 #include "render/frame_params.h"
-#include "render/loop_bound.h"
 #include "shaders/trace.comp.spv.h"
+#include "shared/trace_interface.h"
 #include "vk/barriers.h"
 #include "vk/vk_check.h"
 
 namespace prism {
 namespace {
 
-// lavapipe silently ends an invocation's loops after 65,535 iterations in total; the tracer
-// stops a little earlier (its own count is conservative) and reports the pixel instead.
-constexpr uint32_t kLavapipeLoopBudget = 60000;
-
-constexpr VkDescriptorType kStorageImage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-constexpr VkDescriptorType kStorageBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-
-template <typename T> size_t bytesOf(const std::vector<T> &v) {
-    return v.size() * sizeof(T);
-}
-
-uint64_t counterValue(const gpu::GpuStats &stats, int which) {
-    const glm::uvec4 &c = which == 0   ? stats.primary
-                          : which == 1 ? stats.shadow
-                          : which == 2 ? stats.secondary
-                                       : stats.budget;
-    return uint64_t(c.x) | (uint64_t(c.y) << 32);
+ArrayLimits arrayLimits(const vk::Context &context, const TracerOptions &options) {
+    const VkPhysicalDeviceLimits &device = context.properties().limits;
+    ArrayLimits limits;
+    limits.storageBytes = device.maxStorageBufferRange;
+    if (options.storageBufferLimit != 0)
+        limits.storageBytes = std::min<uint64_t>(limits.storageBytes, options.storageBufferLimit);
+    limits.texelElements = device.maxTexelBufferElements;
+    limits.texelReads = options.texelBuffers;
+    return limits;
 }
 
 } // namespace
 
 RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid, uint32_t width,
                      uint32_t height, const TracerOptions &options)
-    : context_(context), features_(featuresOf(scene)), runner_(context) {
-    if (options.maxDepth < 1 || options.maxDepth > 64)
-        throw Error("ray depth " + std::to_string(options.maxDepth) + " is outside 1..64");
-    features_.maxDepth = options.maxDepth;
-    features_.texelBuffers = options.texelBuffers;
-    storageLimitOverride_ = options.storageBufferLimit;
-    features_.writeAov = options.writeAov;
-    features_.shadows = options.shadows;
-    features_.reflection = features_.reflection && options.reflection;
-    features_.transmission = features_.transmission && options.transmission;
-    if (options.loopBudget >= 0)
-        features_.loopBudget = uint32_t(options.loopBudget);
-    else if (context.isLavapipe())
-        features_.loopBudget =
-            invocationIterationBound(scene, grid, features_) < kLavapipeLoopBudget
-                ? 0u // provably within lavapipe's limit: no counting needed
-                : kLavapipeLoopBudget;
-    else
-        features_.loopBudget = 0u;
-
-    PackedScene packed = packScene(scene, grid);
-    sceneBuffers_.push_back(upload(&packed.header, sizeof(packed.header), "scene header"));
-    sceneBuffers_.push_back(upload(packed.spheres.data(), bytesOf(packed.spheres), "sphere", 16));
-    sceneBuffers_.push_back(upload(packed.planes.data(), bytesOf(packed.planes), "plane"));
-    sceneBuffers_.push_back(
-        upload(packed.triangles.data(), bytesOf(packed.triangles), "triangle", 16));
-    sceneBuffers_.push_back(
-        upload(packed.triangleShading.data(), bytesOf(packed.triangleShading), "triangle shading"));
-    sceneBuffers_.push_back(upload(packed.materials.data(), bytesOf(packed.materials), "material"));
-    sceneBuffers_.push_back(upload(packed.lights.data(), bytesOf(packed.lights), "light"));
-    sceneBuffers_.push_back(
-        upload(packed.cellStart.data(), bytesOf(packed.cellStart), "grid cell offset", 4));
-    sceneBuffers_.push_back(upload(packed.cellPrimitives.data(), bytesOf(packed.cellPrimitives),
-                                   "grid cell primitive", 4));
-    sceneBuffers_.push_back(upload(packed.textures.data(), bytesOf(packed.textures), "texture"));
-    sceneBuffers_.push_back(
-        upload(packed.texels.data(), bytesOf(packed.texels), "texture texel", 16));
-    stats_ = vk::Buffer(context, sizeof(gpu::GpuStats),
-                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                            VK_BUFFER_USAGE_TRANSFER_SRC_BIT, // snapshots for the viewer
-                        true);
-
+    : context_(context), features_(chooseFeatures(scene, grid, options, context.isLavapipe())),
+      limits_(arrayLimits(context, options)), runner_(context),
+      scene_(uploadScene(context, runner_, packScene(scene, grid), limits_)),
+      stats_(context, sizeof(gpu::GpuStats),
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                 VK_BUFFER_USAGE_TRANSFER_SRC_BIT, // snapshots for the viewer
+             true),
+      timestamps_(context) {
     createImages(width, height);
-
-    VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-    queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    queryInfo.queryCount = 2;
-    VK_CHECK(vkCreateQueryPool(context.device(), &queryInfo, nullptr, &timestamps_));
-
     vk::ComputePipelineDesc desc;
     desc.spirv = std::span<const uint32_t>(kTraceCompSpv, sizeof(kTraceCompSpv) / 4);
-    desc.bindings = {kStorageImage, kStorageImage};
-    for (int i = 2; i <= 13; ++i)
-        desc.bindings.push_back(kStorageBuffer);
-    for (int i = 14; i <= 18; ++i)
-        desc.bindings.push_back(VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
+    desc.bindings = traceDescriptorTypes();
     desc.specialization = features_.specialization();
     desc.pushConstantBytes = sizeof(gpu::GpuFrameParams);
     pipeline_ = std::make_unique<vk::ComputePipeline>(context, desc);
-    pipeline_->bindStorageImage(0, accum_.view());
-    pipeline_->bindStorageImage(1, aov_.view());
-    // Both ways of reading the hot arrays are declared by the shader, so both are bound; the
-    // TEXEL_BUFFERS constant decides which one it reads. A storage binding never claims more
-    // than the device allows (in texel mode the array may be larger).
-    VkDeviceSize storageLimit = storageBufferLimit();
-    for (uint32_t i = 0; i < sceneBuffers_.size(); ++i)
-        pipeline_->bindBuffer(2 + i, sceneBuffers_[i].handle(),
-                              std::min(sceneBuffers_[i].size(), storageLimit));
-    struct TexelArray {
-        uint32_t buffer; // index into sceneBuffers_
-        VkFormat format;
-    };
-    const TexelArray texelArrays[] = {{7, VK_FORMAT_R32_UINT},
-                                      {8, VK_FORMAT_R32_UINT},
-                                      {1, VK_FORMAT_R32G32B32A32_SFLOAT},
-                                      {3, VK_FORMAT_R32G32B32A32_SFLOAT},
-                                      {10, VK_FORMAT_R32G32B32A32_SFLOAT}};
-    for (uint32_t i = 0; i < std::size(texelArrays); ++i) {
-        const vk::Buffer &buffer = sceneBuffers_[texelArrays[i].buffer];
-        VkDeviceSize texelSize = texelArrays[i].format == VK_FORMAT_R32_UINT ? 4 : 16;
-        texelViews_.emplace_back(
-            context, buffer.handle(), texelArrays[i].format,
-            std::min(buffer.size(),
-                     VkDeviceSize(context.properties().limits.maxTexelBufferElements) * texelSize));
-        pipeline_->bindTexelBuffer(14 + i, texelViews_.back().handle());
-    }
-    pipeline_->bindBuffer(13, stats_.handle());
+    bindImages();
+    bindScene(*pipeline_, scene_, limits_);
+    pipeline_->bindBuffer(gpu::kBindingStats, stats_.handle());
+}
+
+void RayTracer::bindImages() {
+    pipeline_->bindStorageImage(gpu::kBindingAccumImage, accum_.view());
+    pipeline_->bindStorageImage(gpu::kBindingAovImage, aov_.view());
 }
 
 void RayTracer::resize(uint32_t width, uint32_t height) {
     vkDeviceWaitIdle(context_.device()); // no submission may still use the old images
     createImages(width, height);
-    pipeline_->bindStorageImage(0, accum_.view());
-    pipeline_->bindStorageImage(1, aov_.view());
+    bindImages();
 }
 
 void RayTracer::recordResetCounters(VkCommandBuffer commands) {
@@ -169,56 +95,15 @@ FrameResult RayTracer::decodeCounters(const void *snapshot) {
     gpu::GpuStats stats;
     std::memcpy(&stats, snapshot, sizeof(stats));
     FrameResult result;
-    result.rays.primary = counterValue(stats, 0);
-    result.rays.shadow = counterValue(stats, 1);
-    result.rays.secondary = counterValue(stats, 2);
-    result.overBudgetPixels = counterValue(stats, 3);
+    result.rays.primary = stats.primaryRays;
+    result.rays.shadow = stats.shadowRays;
+    result.rays.secondary = stats.secondaryRays;
+    result.overBudgetPixels = stats.overBudgetPixels;
     return result;
 }
 
 RayTracer::~RayTracer() {
     vkDeviceWaitIdle(context_.device());
-    if (timestamps_)
-        vkDestroyQueryPool(context_.device(), timestamps_, nullptr);
-}
-
-VkDeviceSize RayTracer::storageBufferLimit() const {
-    VkDeviceSize device = context_.properties().limits.maxStorageBufferRange;
-    return storageLimitOverride_ ? std::min(device, storageLimitOverride_) : device;
-}
-
-vk::Buffer RayTracer::upload(const void *data, size_t bytes, const char *what,
-                             VkDeviceSize texelBytes) {
-    const VkPhysicalDeviceLimits &limits = context_.properties().limits;
-    if (features_.texelBuffers && texelBytes != 0) {
-        uint64_t elements = bytes / texelBytes;
-        if (elements > limits.maxTexelBufferElements)
-            throw Error(std::string("scene too large for ") + context_.deviceName() + ": the " +
-                        what + " array has " + std::to_string(elements) +
-                        " texels but one texel buffer may hold at most " +
-                        std::to_string(limits.maxTexelBufferElements) +
-                        " (maxTexelBufferElements)");
-    } else if (bytes > storageBufferLimit()) {
-        throw Error(std::string("scene too large for ") + context_.deviceName() + ": the " + what +
-                    " array needs " + std::to_string(bytes) +
-                    " bytes but one storage buffer may hold at most " +
-                    std::to_string(storageBufferLimit()) + " (maxStorageBufferRange)");
-    }
-    // Vulkan has no empty buffers; unused arrays get one 16-byte element nobody reads.
-    VkDeviceSize size = bytes == 0 ? 16 : bytes;
-    vk::Buffer target(context_, size,
-                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                          (texelBytes ? VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : 0),
-                      false);
-    vk::Buffer staging(context_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
-    std::memset(staging.mapped(), 0, size);
-    if (bytes)
-        std::memcpy(staging.mapped(), data, bytes);
-    runner_.run([&](VkCommandBuffer commands) {
-        VkBufferCopy region{0, 0, size};
-        vkCmdCopyBuffer(commands, staging.handle(), target.handle(), 1, &region);
-    });
-    return target;
 }
 
 void RayTracer::createImages(uint32_t width, uint32_t height) {
@@ -267,12 +152,12 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
         uint32_t end = uint32_t(uint64_t(samplesPerPixel) * (chunk + 1) / chunks);
         Timer hostTimer;
         runner_.run([&](VkCommandBuffer commands) {
-            vkCmdResetQueryPool(commands, timestamps_, 0, 2);
+            timestamps_.recordReset(commands);
             if (chunk == 0)
                 recordResetCounters(commands);
-            vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, timestamps_, 0);
+            timestamps_.recordStart(commands);
             recordSamples(commands, camera, done, end - done, samplesPerPixel);
-            vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, timestamps_, 1);
+            timestamps_.recordEnd(commands);
             VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
             toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
             toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
@@ -280,14 +165,7 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
                                  VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
         });
         double hostMs = hostTimer.elapsedMs();
-        uint64_t ticks[2] = {0, 0};
-        VkResult queried =
-            vkGetQueryPoolResults(context_.device(), timestamps_, 0, 2, sizeof(ticks), ticks,
-                                  sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);
-        result.gpuMs +=
-            queried == VK_SUCCESS && ticks[1] > ticks[0]
-                ? double(ticks[1] - ticks[0]) * context_.properties().limits.timestampPeriod * 1e-6
-                : hostMs;
+        result.gpuMs += timestamps_.elapsedMs().value_or(hostMs);
         done = end;
         if (progress)
             progress(double(done) / samplesPerPixel);

@@ -7,31 +7,16 @@
 #include <vector>
 
 #include "core/ray_counts.h"
-#include "render/scene_packing.h"
+#include "render/scene_buffers.h"
 #include "render/tracer_features.h"
 #include "vk/buffer.h"
-#include "vk/buffer_view.h"
 #include "vk/commands.h"
 #include "vk/compute_pipeline.h"
 #include "vk/context.h"
 #include "vk/image.h"
+#include "vk/timestamp_queries.h"
 
 namespace prism {
-
-struct TracerOptions {
-    uint32_t maxDepth = 5;
-    bool writeAov = false;
-    bool shadows = true;
-    bool reflection = true;   // false: off even where materials reflect (feature-cost study)
-    bool transmission = true; // likewise for refraction
-    int64_t loopBudget = -1;  // -1: the device's own limit (lavapipe: 60,000; GPUs: none)
-    // Read grid cells, spheres and triangle vertices through uniform texel buffers rather than
-    // storage buffers: 10-18% faster on lavapipe (measured in docs/benchmarks.md).
-    bool texelBuffers = true;
-    // Largest storage buffer to use, in bytes; 0: the device's maxStorageBufferRange. Tests
-    // lower it to check that an oversized array is refused with a clear error.
-    VkDeviceSize storageBufferLimit = 0;
-};
 
 struct FrameResult {
     double gpuMs = 0.0; // from GPU timestamps, all sample dispatches of the frame
@@ -82,22 +67,19 @@ public:
     uint32_t height() const { return height_; }
 
 private:
-    vk::Buffer upload(const void *data, size_t bytes, const char *what,
-                      VkDeviceSize texelBytes = 0);
     void createImages(uint32_t width, uint32_t height);
-    VkDeviceSize storageBufferLimit() const;
+    void bindImages();
 
     vk::Context &context_;
     uint32_t width_ = 0, height_ = 0;
     TracerFeatures features_;
+    ArrayLimits limits_;
     vk::CommandRunner runner_;
-    std::vector<vk::Buffer> sceneBuffers_;   // bindings 2..12, in binding order
-    std::vector<vk::BufferView> texelViews_; // bindings 14..18
-    VkDeviceSize storageLimitOverride_ = 0;
+    SceneBuffers scene_;
     vk::Buffer stats_;
     vk::Image accum_;
     vk::Image aov_;
-    VkQueryPool timestamps_ = VK_NULL_HANDLE;
+    vk::TimestampQueries timestamps_;
     std::unique_ptr<vk::ComputePipeline> pipeline_;
 };
 

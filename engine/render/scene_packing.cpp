@@ -1,11 +1,13 @@
 #include "render/scene_packing.h"
 
 #include "core/error.h"
+#include "scene/primitive_ids.h"
 
 namespace prism {
 namespace {
 
-// Material and texture indices travel in float lanes; floats hold integers exactly below 2^24.
+// Material indices travel in float lanes (gpu::indexFromFloat); floats hold integers exactly
+// below 2^24.
 float indexAsFloat(uint32_t index) {
     if (index >= (1u << 24))
         throw Error("scene has more than 16,777,216 materials");
@@ -24,18 +26,24 @@ PackedScene packScene(const Scene &scene, const Grid &grid) {
     h.gridRes = glm::uvec4(res, res.x * res.y * res.z);
     h.counts = glm::uvec4(scene.spheres.size(), scene.planes.size(), scene.triangles.size(),
                           scene.lights.size());
+    h.idEnd = PrimitiveIds(scene).end;
     h.background = glm::vec4(scene.background, 1.0f);
     h.ambient = glm::vec4(scene.ambient, 1.0f);
 
     for (const Sphere &s : scene.spheres)
-        packed.spheres.push_back({glm::vec4(s.center, s.radius), glm::uvec4(s.material, 0, 0, 0)});
+        packed.spheres.push_back(
+            {glm::vec4(s.center, s.radius), glm::vec4(indexAsFloat(s.material), 0.0f, 0.0f, 0.0f)});
     for (const Plane &p : scene.planes)
         packed.planes.push_back({glm::vec4(p.normal, glm::dot(p.normal, p.point)),
                                  glm::vec4(p.point, indexAsFloat(p.material))});
 
+    // The tracer reads shading data for every triangle hit where the scene has vertex normals or
+    // textures (tracer_features.h): then every triangle has its record.
     bool needShading = false;
     for (const Triangle &t : scene.triangles)
         needShading = needShading || t.hasNormals || t.hasUVs;
+    for (const Material &m : scene.materials)
+        needShading = needShading || (m.texture != kNoTexture && !scene.triangles.empty());
     for (const Triangle &t : scene.triangles) {
         packed.triangles.push_back({glm::vec4(t.p[0], indexAsFloat(t.material)),
                                     glm::vec4(t.p[1], 0.0f), glm::vec4(t.p[2], 0.0f)});

@@ -1,14 +1,30 @@
 #include "render/tracer_features.h"
 
 #include <algorithm>
+#include <string>
+
+#include "core/error.h"
+#include "render/loop_bound.h"
+#include "scene/primitive_ids.h"
+#include "shared/trace_interface.h"
 
 namespace prism {
+namespace {
+
+// lavapipe silently ends an invocation's loops after 65,535 iterations in total; the tracer
+// stops a little earlier (its own count is conservative) and reports the pixel instead.
+constexpr uint32_t kLavapipeLoopBudget = 60000;
+
+} // namespace
 
 TracerFeatures featuresOf(const Scene &scene) {
     TracerFeatures f;
-    f.spheres = !scene.spheres.empty();
-    f.planes = !scene.planes.empty();
-    f.triangles = !scene.triangles.empty();
+    PrimitiveIds ids(scene);
+    for (uint32_t kind = 0; kind < gpu::kFiniteKindCount; ++kind)
+        if (ids.end[int(kind)] > ids.first(kind))
+            f.kinds |= 1u << kind;
+    if (!scene.planes.empty())
+        f.kinds |= 1u << gpu::kKindPlane;
     auto used = [&](auto predicate) {
         return std::any_of(scene.materials.begin(), scene.materials.end(), predicate);
     };
@@ -22,10 +38,41 @@ TracerFeatures featuresOf(const Scene &scene) {
     return f;
 }
 
-std::vector<uint32_t> TracerFeatures::specialization() const {
+TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const TracerOptions &options,
+                              bool deviceCutsLongLoops) {
+    if (options.maxDepth < 1 || options.maxDepth > 64)
+        throw Error("ray depth " + std::to_string(options.maxDepth) + " is outside 1..64");
+    TracerFeatures f = featuresOf(scene);
+    f.maxDepth = options.maxDepth;
+    f.texelBuffers = options.texelBuffers;
+    f.writeAov = options.writeAov;
+    f.shadows = options.shadows;
+    f.reflection = f.reflection && options.reflection;
+    f.transmission = f.transmission && options.transmission;
+    if (options.loopBudget >= 0)
+        f.loopBudget = uint32_t(options.loopBudget);
+    else if (deviceCutsLongLoops)
+        f.loopBudget = invocationIterationBound(scene, grid, f) < kLavapipeLoopBudget
+                           ? 0u // provably within lavapipe's limit: no counting needed
+                           : kLavapipeLoopBudget;
+    else
+        f.loopBudget = 0u;
+    return f;
+}
+
+std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
     uint32_t stackSize = std::max(1u, 2u * maxDepth - 1u); // see pushRay in trace.comp
-    return {spheres,       planes,  triangles, reflection, transmission, textures,    areaLights,
-            vertexNormals, shadows, writeAov,  loopBudget, stackSize,    texelBuffers};
+    return {{gpu::kSpecKinds, kinds},
+            {gpu::kSpecHasReflection, reflection},
+            {gpu::kSpecHasTransmission, transmission},
+            {gpu::kSpecHasTextures, textures},
+            {gpu::kSpecHasAreaLights, areaLights},
+            {gpu::kSpecHasVertexNormals, vertexNormals},
+            {gpu::kSpecHasShadows, shadows},
+            {gpu::kSpecWriteAov, writeAov},
+            {gpu::kSpecLoopBudget, loopBudget},
+            {gpu::kSpecStackSize, stackSize},
+            {gpu::kSpecTexelBuffers, texelBuffers}};
 }
 
 } // namespace prism

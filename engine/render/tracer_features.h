@@ -1,17 +1,33 @@
 #pragma once
-// Which tracer features a scene needs; each becomes a specialization constant so a scene pays
-// only for what it uses (no refraction code when nothing transmits, ...).
+// Which tracer features a scene needs, and the options a caller may override; each feature
+// becomes a specialization constant (shaders/shared/trace_interface.h) so a scene pays only for
+// what it uses (no refraction code when nothing transmits, ...).
 #include <cstdint>
 #include <vector>
 
+#include "accel/grid.h"
 #include "scene/scene.h"
+#include "vk/descriptor_set.h"
 
 namespace prism {
 
+struct TracerOptions {
+    uint32_t maxDepth = 5;
+    bool writeAov = false;
+    bool shadows = true;
+    bool reflection = true;   // false: off even where materials reflect (feature-cost study)
+    bool transmission = true; // likewise for refraction
+    int64_t loopBudget = -1;  // -1: the device's own limit (lavapipe: 60,000; GPUs: none)
+    // Read grid cells, spheres and triangles through uniform texel buffers rather than storage
+    // buffers: 10-18% faster on lavapipe (measured in docs/benchmarks.md).
+    bool texelBuffers = true;
+    // Largest storage buffer to use, in bytes; 0: the device's maxStorageBufferRange. Tests
+    // lower it to check that an oversized array is refused, or read through its texel view.
+    uint64_t storageBufferLimit = 0;
+};
+
 struct TracerFeatures {
-    bool spheres = false;
-    bool planes = false;
-    bool triangles = false;
+    uint32_t kinds = 0; // bit k: the scene has primitives of kind k (shared/primitive_kinds.h)
     bool reflection = false;
     bool transmission = false;
     bool textures = false;
@@ -21,12 +37,19 @@ struct TracerFeatures {
     bool writeAov = false;
     uint32_t loopBudget = 0; // 0: unlimited
     uint32_t maxDepth = 5;
-    bool texelBuffers = false; // hot arrays through uniform texel buffers
+    bool texelBuffers = false; // arrays with texel views read through them
 
-    // Constant ids 0.. in the order of shaders/bindings.glsl.
-    std::vector<uint32_t> specialization() const;
+    bool has(uint32_t kind) const { return (kinds >> kind) & 1u; }
+    std::vector<vk::SpecializationConstant> specialization() const;
 };
 
+// What the scene's content asks for (options at their defaults, no loop budget).
 TracerFeatures featuresOf(const Scene &scene);
+
+// The variant to compile: the scene's features with the caller's options applied, and a loop
+// budget only where the device cuts loops short (lavapipe) and the scene could reach its limit.
+// Throws prism::Error for a depth outside 1..64.
+TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const TracerOptions &options,
+                              bool deviceCutsLongLoops);
 
 } // namespace prism

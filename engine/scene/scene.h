@@ -80,7 +80,7 @@ struct Scene {
     std::vector<Triangle> triangles;
     std::vector<std::string> warnings; // "FILE:LINE: warning: ..." lines, in order
 
-    // Primitives that live in the grid: spheres first, then triangles (one index space).
+    // Primitives that live in the grid (their ids: scene/primitive_ids.h).
     size_t finitePrimitiveCount() const { return spheres.size() + triangles.size(); }
 };
 

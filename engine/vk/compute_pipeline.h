@@ -16,7 +16,7 @@ class Context;
 struct ComputePipelineDesc {
     std::span<const uint32_t> spirv;
     std::vector<VkDescriptorType> bindings; // binding i has type bindings[i], count 1
-    std::vector<uint32_t> specialization;   // constant_id i = specialization[i]
+    std::vector<SpecializationConstant> specialization;
     uint32_t pushConstantBytes = 0;
 };
 

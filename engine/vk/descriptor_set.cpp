@@ -85,9 +85,11 @@ void DescriptorSet::writeTexelBuffer(uint32_t binding, VkBufferView view) {
     vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
 }
 
-SpecializationData::SpecializationData(const std::vector<uint32_t> &v) : values(v) {
-    for (uint32_t i = 0; i < values.size(); ++i)
-        entries.push_back({i, i * 4u, 4u});
+SpecializationData::SpecializationData(const std::vector<SpecializationConstant> &constants) {
+    for (const SpecializationConstant &c : constants) {
+        entries.push_back({c.id, uint32_t(values.size()) * 4u, 4u});
+        values.push_back(c.value);
+    }
     info.mapEntryCount = static_cast<uint32_t>(entries.size());
     info.pMapEntries = entries.data();
     info.dataSize = values.size() * 4u;

@@ -33,10 +33,15 @@ private:
     VkDescriptorSet set_ = VK_NULL_HANDLE;
 };
 
-// Specialization constants 0..n-1, each a 32-bit value; keeps the map entries alive for as
-// long as `info` is used.
+// One 32-bit specialization constant: the shader's constant_id and its value.
+struct SpecializationConstant {
+    uint32_t id;
+    uint32_t value;
+};
+
+// Keeps the values and map entries alive for as long as `info` is used.
 struct SpecializationData {
-    explicit SpecializationData(const std::vector<uint32_t> &values);
+    explicit SpecializationData(const std::vector<SpecializationConstant> &constants);
     std::vector<uint32_t> values;
     std::vector<VkSpecializationMapEntry> entries;
     VkSpecializationInfo info{};

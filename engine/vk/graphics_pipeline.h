@@ -17,10 +17,10 @@ class Context;
 struct GraphicsPipelineDesc {
     std::span<const uint32_t> vertexSpirv;
     std::span<const uint32_t> fragmentSpirv;
-    std::vector<VkDescriptorType> bindings;       // fragment stage, binding i, count 1
-    std::vector<uint32_t> fragmentSpecialization; // constant_id i = value i
-    uint32_t pushConstantBytes = 0;               // fragment stage
-    VkRenderPass renderPass = VK_NULL_HANDLE;     // subpass 0
+    std::vector<VkDescriptorType> bindings; // fragment stage, binding i, count 1
+    std::vector<SpecializationConstant> fragmentSpecialization;
+    uint32_t pushConstantBytes = 0;           // fragment stage
+    VkRenderPass renderPass = VK_NULL_HANDLE; // subpass 0
 };
 
 class GraphicsPipeline {

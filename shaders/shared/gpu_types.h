@@ -1,8 +1,11 @@
 // Buffer layouts shared by the host (C++) and the tracer (GLSL), std430. Every member is a
-// vec4/uvec4 so the two agree without padding rules; the static_asserts below pin them down.
+// vec4/uvec4 (or a 64-bit counter) so the two agree without padding rules; the static_asserts
+// below pin them down. Fields are packed four to a vector and read through the named accessors
+// next to each struct, on both sides, never by lane.
 #ifndef PRISM_GPU_TYPES_H
 #define PRISM_GPU_TYPES_H
 #include "glsl_compat.h"
+#include "primitive_kinds.h"
 
 PRISM_NAMESPACE_BEGIN
 
@@ -12,33 +15,53 @@ PRISM_NAMESPACE_BEGIN
 #define PRISM_OFFSET_RELATIVE 3.814697265625e-06
 #define PRISM_OFFSET_FLOOR 1e-30
 
-// Primitive ids in grid cells: spheres [0, sphereCount), then triangles.
+// Material indices travel in float lanes, exact below 2^24 (the packer refuses more).
+PRISM_INLINE uint indexFromFloat(float lane) {
+    return uint(lane);
+}
+
 struct GpuSceneHeader {
     vec4 gridMin;    // xyz: grid bounds min
     vec4 gridMax;    // xyz: grid bounds max
     vec4 cellSize;   // xyz: size of one cell; w unused
     uvec4 gridRes;   // xyz: cells per axis; w: cell count
     uvec4 counts;    // x: spheres, y: planes, z: triangles, w: lights
+    uvec4 idEnd;     // [kind]: end of that finite kind's grid id range (primitive_kinds.h)
     vec4 background; // rgb
     vec4 ambient;    // rgb: scene ambient light
 };
+PRISM_INLINE uint headerPlaneCount(PRISM_IN(GpuSceneHeader) h) {
+    return h.counts.y;
+}
+PRISM_INLINE uint headerLightCount(PRISM_IN(GpuSceneHeader) h) {
+    return h.counts.w;
+}
 
 struct GpuSphere {
     vec4 centerRadius; // xyz centre, w radius
-    uvec4 material;    // x: material index
+    vec4 attributes;   // x: material index
 };
+PRISM_INLINE uint sphereMaterial(PRISM_IN(GpuSphere) s) {
+    return indexFromFloat(s.attributes.x);
+}
 
 struct GpuPlane {
     vec4 normalOffset; // xyz unit normal, w = dot(normal, point)
-    vec4 point;        // xyz a point on the plane; w: material index (as float, exact)
+    vec4 point;        // xyz a point on the plane; w: material index
 };
+PRISM_INLINE uint planeMaterial(PRISM_IN(GpuPlane) p) {
+    return indexFromFloat(p.point.w);
+}
 
 // Vertices only: the intersection loop reads 48 bytes per triangle; shading data lives apart.
 struct GpuTriangle {
-    vec4 v0; // w: material index (as float, exact below 2^24)
+    vec4 v0; // w: material index
     vec4 v1;
     vec4 v2;
 };
+PRISM_INLINE uint triangleMaterial(PRISM_IN(GpuTriangle) t) {
+    return indexFromFloat(t.v0.w);
+}
 
 struct GpuTriangleShading {
     vec4 n0; // vertex normals; n0.w = 1 when present
@@ -47,28 +70,82 @@ struct GpuTriangleShading {
     vec4 uv01; // xy: uv0, zw: uv1
     vec4 uv2;  // xy: uv2
 };
+PRISM_INLINE bool shadingHasNormals(PRISM_IN(GpuTriangleShading) s) {
+    return s.n0.w != 0.0f;
+}
+PRISM_INLINE bool shadingHasUVs(PRISM_IN(GpuTriangleShading) s) {
+    return s.n1.w != 0.0f;
+}
 
 struct GpuMaterial {
     vec4 colorAmbient; // rgb colour, a: ambient coefficient
     vec4 lighting;     // x diffuse, y specular, z shininess, w reflect
     vec4 optics;       // x transmit, y ior, z texture index (-1: none)
 };
+PRISM_INLINE vec3 materialColor(PRISM_IN(GpuMaterial) m) {
+    return vec3(m.colorAmbient);
+}
+PRISM_INLINE float materialAmbient(PRISM_IN(GpuMaterial) m) {
+    return m.colorAmbient.w;
+}
+PRISM_INLINE float materialDiffuse(PRISM_IN(GpuMaterial) m) {
+    return m.lighting.x;
+}
+PRISM_INLINE float materialSpecular(PRISM_IN(GpuMaterial) m) {
+    return m.lighting.y;
+}
+PRISM_INLINE float materialShininess(PRISM_IN(GpuMaterial) m) {
+    return m.lighting.z;
+}
+PRISM_INLINE float materialReflect(PRISM_IN(GpuMaterial) m) {
+    return m.lighting.w;
+}
+PRISM_INLINE float materialTransmit(PRISM_IN(GpuMaterial) m) {
+    return m.optics.x;
+}
+PRISM_INLINE float materialIor(PRISM_IN(GpuMaterial) m) {
+    return m.optics.y;
+}
+PRISM_INLINE bool materialHasTexture(PRISM_IN(GpuMaterial) m) {
+    return m.optics.z >= 0.0f;
+}
+PRISM_INLINE uint materialTexture(PRISM_IN(GpuMaterial) m) {
+    return uint(m.optics.z);
+}
 
 struct GpuLight {
     vec4 positionRadius; // xyz position, w radius (0: point light)
     vec4 color;
 };
+PRISM_INLINE vec3 lightPosition(PRISM_IN(GpuLight) l) {
+    return vec3(l.positionRadius);
+}
+PRISM_INLINE float lightRadius(PRISM_IN(GpuLight) l) {
+    return l.positionRadius.w;
+}
+PRISM_INLINE vec3 lightColor(PRISM_IN(GpuLight) l) {
+    return vec3(l.color);
+}
 
 struct GpuTexture {
     uvec4 info; // x: first texel in the texel array, y: width, z: height
 };
+PRISM_INLINE uint textureFirstTexel(PRISM_IN(GpuTexture) t) {
+    return t.info.x;
+}
+PRISM_INLINE uint textureWidth(PRISM_IN(GpuTexture) t) {
+    return t.info.y;
+}
+PRISM_INLINE uint textureHeight(PRISM_IN(GpuTexture) t) {
+    return t.info.z;
+}
 
 // Counters the tracer adds to with atomics (64-bit: a frame can trace billions of rays).
 struct GpuStats {
-    uvec4 primary; // xy: uint64 as two words (lo, hi)
-    uvec4 shadow;
-    uvec4 secondary;
-    uvec4 budget; // x: pixels that hit the loop budget
+    uint64_t primaryRays;
+    uint64_t shadowRays;
+    uint64_t secondaryRays;
+    uint64_t overBudgetPixels; // pixels whose walk reached the loop budget
 };
 
 // Per-frame parameters (push constants, 128 bytes at most).
@@ -77,18 +154,31 @@ struct GpuFrameParams {
     vec4 forward;  // xyz: unit view direction
     vec4 du;       // right scaled by h*a (perspective) or (H/2)*a (ortho)
     vec4 dv;       // true up scaled by h (perspective) or H/2 (ortho)
-    uvec4 image;   // x width, y height, z first sample index, w samples per pixel in total
-    uvec4 control; // x: max depth, y: samples in this dispatch
+    uvec4 image;   // x width, y height, z this dispatch's sample index, w samples per pixel
+    uvec4 control; // x: max depth
 };
+PRISM_INLINE bool isParallelCamera(PRISM_IN(GpuFrameParams) f) {
+    return f.eye.w != 0.0f;
+}
+PRISM_INLINE uint frameSampleIndex(PRISM_IN(GpuFrameParams) f) {
+    return f.image.z;
+}
+PRISM_INLINE uint frameSamplesPerPixel(PRISM_IN(GpuFrameParams) f) {
+    return f.image.w;
+}
+PRISM_INLINE uint frameMaxDepth(PRISM_IN(GpuFrameParams) f) {
+    return f.control.x;
+}
 
 PRISM_NAMESPACE_END
 
 #ifdef __cplusplus
 #include <cstddef>
 namespace prism::gpu {
-static_assert(sizeof(GpuSceneHeader) == 112);
+static_assert(sizeof(GpuSceneHeader) == 128);
 static_assert(offsetof(GpuSceneHeader, gridRes) == 48);
-static_assert(offsetof(GpuSceneHeader, ambient) == 96);
+static_assert(offsetof(GpuSceneHeader, idEnd) == 80);
+static_assert(offsetof(GpuSceneHeader, ambient) == 112);
 static_assert(sizeof(GpuSphere) == 32);
 static_assert(sizeof(GpuPlane) == 32);
 static_assert(sizeof(GpuTriangle) == 48);
@@ -98,7 +188,8 @@ static_assert(sizeof(GpuMaterial) == 48);
 static_assert(offsetof(GpuMaterial, optics) == 32);
 static_assert(sizeof(GpuLight) == 32);
 static_assert(sizeof(GpuTexture) == 16);
-static_assert(sizeof(GpuStats) == 64);
+static_assert(sizeof(GpuStats) == 32);
+static_assert(offsetof(GpuStats, overBudgetPixels) == 24);
 static_assert(sizeof(GpuFrameParams) == 96);
 static_assert(offsetof(GpuFrameParams, image) == 64);
 static_assert(sizeof(GpuFrameParams) <= 128, "push constants are limited to 128 bytes");

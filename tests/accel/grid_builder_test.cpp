@@ -5,6 +5,7 @@
 #include "accel/grid.h"
 #include "accel/overlap_tests.h"
 #include "grid_test_scenes.h"
+#include "scene/primitive_ids.h"
 
 namespace prism {
 namespace {
@@ -114,7 +115,7 @@ TEST(GridBuilder, CellsListExactlyTheOverlappingPrimitives) {
     Scene scene = test::randomSpheresAndTriangles(5, 150, 300);
     Grid g = buildGrid(scene, parseGridOption("12x9x10"));
     expectWellFormed(g);
-    uint32_t sphereCount = uint32_t(scene.spheres.size());
+    PrimitiveIds ids(scene);
     for (int z = 0; z < g.resolution.z; ++z)
         for (int y = 0; y < g.resolution.y; ++y)
             for (int x = 0; x < g.resolution.x; ++x) {
@@ -123,14 +124,15 @@ TEST(GridBuilder, CellsListExactlyTheOverlappingPrimitives) {
                 glm::dvec3 hi = lo + glm::dvec3(g.cellSize);
                 glm::dvec3 wide = 0.01 * glm::dvec3(g.cellSize);
                 std::vector<uint32_t> listed = primitivesOf(g, {x, y, z});
-                for (uint32_t id = 0; id < scene.finitePrimitiveCount(); ++id) {
+                for (uint32_t id = 0; id < ids.count(); ++id) {
                     bool exact, loose;
-                    if (id < sphereCount) {
-                        const Sphere &s = scene.spheres[id];
+                    PrimitiveIds::Decoded primitive = ids.decode(id);
+                    if (primitive.kind == gpu::kKindSphere) {
+                        const Sphere &s = scene.spheres[primitive.index];
                         exact = sphereOverlapsBox(s.center, s.radius, lo, hi);
                         loose = sphereOverlapsBox(s.center, s.radius, lo - wide, hi + wide);
                     } else {
-                        const Triangle &t = scene.triangles[id - sphereCount];
+                        const Triangle &t = scene.triangles[primitive.index];
                         exact = triangleOverlapsBox(t.p[0], t.p[1], t.p[2], lo, hi);
                         loose = triangleOverlapsBox(t.p[0], t.p[1], t.p[2], lo - wide, hi + wide);
                     }

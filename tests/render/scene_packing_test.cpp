@@ -1,9 +1,13 @@
 // The host's packing of the scene into std430 arrays (no device needed).
+#include <map>
+
 #include <gtest/gtest.h>
 
 #include "render/frame_params.h"
 #include "render/scene_packing.h"
 #include "render/tracer_features.h"
+#include "scene/primitive_ids.h"
+#include "shared/trace_interface.h"
 #include "test_scenes.h"
 
 namespace prism::test {
@@ -20,33 +24,87 @@ TEST(ScenePacking, CarriesEveryArrayAndIndex) {
     Grid grid = buildGrid(scene, {});
     PackedScene packed = packScene(scene, grid);
 
+    // Read back through the accessors the shader uses (shared/gpu_types.h).
     EXPECT_EQ(packed.header.counts, glm::uvec4(3, 1, 8, 1));
+    EXPECT_EQ(gpu::headerPlaneCount(packed.header), 1u);
+    EXPECT_EQ(gpu::headerLightCount(packed.header), 1u);
     ASSERT_EQ(packed.planes.size(), 1u);
     EXPECT_EQ(packed.planes[0].normalOffset, glm::vec4(0, 1, 0, 0));
-    EXPECT_EQ(packed.planes[0].point.w, 1.0f); // material "floor"
-    EXPECT_EQ(packed.spheres[1].material.x, 3u);
-    EXPECT_EQ(packed.triangles[0].v0.w, 5.0f);
-    EXPECT_TRUE(packed.triangleShading.empty()) << "no normals or UVs: no shading array";
-    EXPECT_EQ(packed.materials[2].optics.z, 1.0f);
-    EXPECT_EQ(packed.textures[1].info, glm::uvec4(2, 2, 1, 0)); // second texture starts at 2
+    EXPECT_EQ(gpu::planeMaterial(packed.planes[0]), 1u); // "floor"
+    EXPECT_EQ(gpu::sphereMaterial(packed.spheres[1]), 3u);
+    EXPECT_EQ(gpu::triangleMaterial(packed.triangles[0]), 5u);
+    const Material &textured = scene.materials[2];
+    const gpu::GpuMaterial &m = packed.materials[2];
+    EXPECT_EQ(gpu::materialColor(m), textured.color);
+    EXPECT_EQ(gpu::materialAmbient(m), textured.ambient);
+    EXPECT_EQ(gpu::materialDiffuse(m), textured.diffuse);
+    EXPECT_EQ(gpu::materialSpecular(m), textured.specular);
+    EXPECT_EQ(gpu::materialShininess(m), textured.shininess);
+    EXPECT_EQ(gpu::materialReflect(m), textured.reflect);
+    EXPECT_EQ(gpu::materialTransmit(m), textured.transmit);
+    EXPECT_EQ(gpu::materialIor(m), textured.ior);
+    EXPECT_TRUE(gpu::materialHasTexture(m));
+    EXPECT_EQ(gpu::materialTexture(m), 1u);
+    EXPECT_FALSE(gpu::materialHasTexture(packed.materials[1]));
+    EXPECT_EQ(gpu::lightPosition(packed.lights[0]), scene.lights[0].position);
+    EXPECT_EQ(gpu::lightRadius(packed.lights[0]), scene.lights[0].radius);
+    EXPECT_EQ(gpu::lightColor(packed.lights[0]), scene.lights[0].color);
+    EXPECT_EQ(gpu::textureFirstTexel(packed.textures[1]), 2u); // after the first texture's 2
+    EXPECT_EQ(gpu::textureWidth(packed.textures[1]), 2u);
+    EXPECT_EQ(gpu::textureHeight(packed.textures[1]), 1u);
+    // A textured material makes the tracer read shading data for every triangle hit.
+    ASSERT_EQ(packed.triangleShading.size(), scene.triangles.size());
+    EXPECT_FALSE(gpu::shadingHasNormals(packed.triangleShading[0]));
+    EXPECT_FALSE(gpu::shadingHasUVs(packed.triangleShading[0]));
     EXPECT_EQ(packed.texels.size(), 4u);
     EXPECT_EQ(packed.cellStart.size(), size_t(packed.header.gridRes.w) + 1);
     EXPECT_EQ(packed.cellStart.back(), packed.cellPrimitives.size());
 }
 
+TEST(ScenePacking, ShadingArrayOnlyWhereTheTracerReadsIt) {
+    Scene scene = stabilityScene(); // no normals, UVs or textures
+    EXPECT_TRUE(packScene(scene, buildGrid(scene, {})).triangleShading.empty());
+    scene.triangles[3].hasUVs = true;
+    PackedScene packed = packScene(scene, buildGrid(scene, {}));
+    ASSERT_EQ(packed.triangleShading.size(), scene.triangles.size());
+    EXPECT_TRUE(gpu::shadingHasUVs(packed.triangleShading[3]));
+    EXPECT_FALSE(gpu::shadingHasNormals(packed.triangleShading[3]));
+}
+
+// Grid ids: spheres first, then triangles; the header carries the ranges the tracer decodes.
+TEST(ScenePacking, PrimitiveIdRangesFollowTheKinds) {
+    Scene scene = stabilityScene();
+    PrimitiveIds ids(scene);
+    EXPECT_EQ(ids.first(gpu::kKindSphere), 0u);
+    EXPECT_EQ(ids.first(gpu::kKindTriangle), 3u);
+    EXPECT_EQ(ids.count(), 11u);
+    EXPECT_EQ(ids.id(gpu::kKindTriangle, 2), 5u);
+    PrimitiveIds::Decoded d = ids.decode(5);
+    EXPECT_EQ(d.kind, gpu::kKindTriangle);
+    EXPECT_EQ(d.index, 2u);
+    EXPECT_EQ(ids.decode(2).kind, gpu::kKindSphere);
+    EXPECT_EQ(packScene(scene, buildGrid(scene, {})).header.idEnd, ids.end);
+}
+
 TEST(TracerFeatures, FollowTheScene) {
     Scene scene = stabilityScene();
     TracerFeatures f = featuresOf(scene);
-    EXPECT_TRUE(f.spheres && f.planes && f.triangles && f.reflection && f.transmission);
+    EXPECT_TRUE(f.has(gpu::kKindSphere) && f.has(gpu::kKindPlane) && f.has(gpu::kKindTriangle));
+    EXPECT_TRUE(f.reflection && f.transmission);
     EXPECT_FALSE(f.textures || f.areaLights || f.vertexNormals);
     scene.materials[3].transmit = 0.0f;
     EXPECT_FALSE(featuresOf(scene).transmission);
     f.maxDepth = 5;
     f.texelBuffers = true;
-    std::vector<uint32_t> constants = f.specialization();
-    ASSERT_EQ(constants.size(), 13u); // constant_id 0..12 in shaders/bindings.glsl
-    EXPECT_EQ(constants[11], 9u) << "stack holds 2 * depth - 1 rays";
-    EXPECT_EQ(constants[12], 1u) << "texel-buffer reads";
+    std::map<uint32_t, uint32_t> constants;
+    for (vk::SpecializationConstant c : f.specialization())
+        EXPECT_TRUE(constants.emplace(c.id, c.value).second) << "constant_id " << c.id << " twice";
+    EXPECT_EQ(constants.size(), 11u); // every constant_id of shared/trace_interface.h
+    EXPECT_EQ(constants.at(gpu::kSpecKinds), 0b111u) << "spheres, triangles and planes";
+    EXPECT_EQ(constants.at(gpu::kSpecStackSize), 9u) << "stack holds 2 * depth - 1 rays";
+    EXPECT_EQ(constants.at(gpu::kSpecTexelBuffers), 1u) << "texel-buffer reads";
+    EXPECT_EQ(constants.at(gpu::kSpecHasTextures), 0u);
+    EXPECT_EQ(constants.at(gpu::kSpecHasTransmission), 1u);
 }
 
 TEST(FrameParams, FollowTheCameraModel) {

@@ -1,0 +1,152 @@
+#include "render/scene_buffers.h"
+
+#include <algorithm>
+#include <cstring>
+#include <span>
+
+#include "core/error.h"
+#include "shared/trace_interface.h"
+
+namespace prism {
+namespace {
+
+// How an array may be read as texels: its format and bytes per texel.
+struct TexelLayout {
+    VkFormat format = VK_FORMAT_UNDEFINED; // undefined: storage buffer only
+    uint64_t bytes = 0;
+};
+constexpr TexelLayout kStorageOnly{};
+constexpr TexelLayout kUintTexels{VK_FORMAT_R32_UINT, 4};
+constexpr TexelLayout kVec4Texels{VK_FORMAT_R32G32B32A32_SFLOAT, 16};
+constexpr uint32_t kNoTexelBinding = ~0u;
+
+class Uploader {
+public:
+    Uploader(const vk::Context &context, vk::CommandRunner &runner, const ArrayLimits &limits)
+        : context_(context), runner_(runner), limits_(limits) {}
+
+    SceneArray array(std::span<const std::byte> data, const char *what, TexelLayout texels) {
+        uint64_t bytes = data.size();
+        checkFits(bytes, what, texels);
+        SceneArray array;
+        array.buffer = upload(data.data(), bytes, texels.bytes != 0);
+        if (texels.bytes != 0)
+            array.texels = vk::BufferView(
+                context_, array.buffer.handle(), texels.format,
+                std::min<uint64_t>(array.buffer.size(), limits_.texelElements * texels.bytes));
+        return array;
+    }
+
+    vk::Buffer upload(const void *data, uint64_t bytes, bool texelView) {
+        // Vulkan has no empty buffers; unused arrays get one 16-byte element nobody reads.
+        VkDeviceSize size = bytes == 0 ? 16 : bytes;
+        vk::Buffer target(context_, size,
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                              (texelView ? VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : 0),
+                          false);
+        vk::Buffer staging(context_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+        std::memset(staging.mapped(), 0, size);
+        if (bytes)
+            std::memcpy(staging.mapped(), data, bytes);
+        runner_.run([&](VkCommandBuffer commands) {
+            VkBufferCopy region{0, 0, size};
+            vkCmdCopyBuffer(commands, staging.handle(), target.handle(), 1, &region);
+        });
+        return target;
+    }
+
+private:
+    void checkFits(uint64_t bytes, const char *what, TexelLayout texels) const {
+        std::string prefix = std::string("scene too large for ") + context_.deviceName() +
+                             ": the " + what + " array ";
+        if (limits_.texelReads && texels.bytes != 0) {
+            uint64_t elements = bytes / texels.bytes;
+            if (elements > limits_.texelElements)
+                throw Error(prefix + "has " + std::to_string(elements) +
+                            " texels but one texel buffer may hold at most " +
+                            std::to_string(limits_.texelElements) + " (maxTexelBufferElements)");
+        } else if (bytes > limits_.storageBytes) {
+            throw Error(prefix + "needs " + std::to_string(bytes) +
+                        " bytes but one storage buffer may hold at most " +
+                        std::to_string(limits_.storageBytes) + " (maxStorageBufferRange)");
+        }
+    }
+
+    const vk::Context &context_;
+    vk::CommandRunner &runner_;
+    const ArrayLimits &limits_;
+};
+
+// Every scene array once: where it comes from, its name in errors, its bindings
+// (shared/trace_interface.h) and whether the tracer may read it as texels.
+template <auto member> std::span<const std::byte> bytesOf(const PackedScene &packed) {
+    return std::as_bytes(std::span(packed.*member));
+}
+
+struct ArrayBinding {
+    SceneArray SceneBuffers::*array;
+    std::span<const std::byte> (*data)(const PackedScene &);
+    const char *what;
+    uint32_t storageBinding;
+    uint32_t texelBinding; // kNoTexelBinding: storage only
+    TexelLayout texels;
+};
+
+using namespace gpu;
+using P = PackedScene;
+using B = SceneBuffers;
+const ArrayBinding kArrays[] = {
+    {&B::spheres, bytesOf<&P::spheres>, "sphere", kBindingSpheres, kBindingSphereTexels,
+     kVec4Texels},
+    {&B::planes, bytesOf<&P::planes>, "plane", kBindingPlanes, kNoTexelBinding, kStorageOnly},
+    {&B::triangles, bytesOf<&P::triangles>, "triangle", kBindingTriangles, kBindingTriangleTexels,
+     kVec4Texels},
+    {&B::triangleShading, bytesOf<&P::triangleShading>, "triangle shading", kBindingTriangleShading,
+     kBindingTriangleShadingTexels, kVec4Texels},
+    {&B::materials, bytesOf<&P::materials>, "material", kBindingMaterials, kNoTexelBinding,
+     kStorageOnly},
+    {&B::lights, bytesOf<&P::lights>, "light", kBindingLights, kNoTexelBinding, kStorageOnly},
+    {&B::cellStart, bytesOf<&P::cellStart>, "grid cell offset", kBindingCellStart,
+     kBindingCellStartTexels, kUintTexels},
+    {&B::cellPrimitives, bytesOf<&P::cellPrimitives>, "grid cell primitive", kBindingCellPrimitives,
+     kBindingCellPrimitiveTexels, kUintTexels},
+    {&B::textures, bytesOf<&P::textures>, "texture", kBindingTextures, kNoTexelBinding,
+     kStorageOnly},
+    {&B::texels, bytesOf<&P::texels>, "texture texel", kBindingTexels, kBindingImageTexels,
+     kVec4Texels},
+};
+
+} // namespace
+
+SceneBuffers uploadScene(const vk::Context &context, vk::CommandRunner &runner,
+                         const PackedScene &packed, const ArrayLimits &limits) {
+    Uploader up(context, runner, limits);
+    SceneBuffers b;
+    b.header = up.upload(&packed.header, sizeof(packed.header), false);
+    for (const ArrayBinding &a : kArrays)
+        b.*a.array = up.array(a.data(packed), a.what, a.texels);
+    return b;
+}
+
+void bindScene(vk::ComputePipeline &pipeline, const SceneBuffers &b, const ArrayLimits &limits) {
+    pipeline.bindBuffer(kBindingHeader, b.header.handle());
+    for (const ArrayBinding &a : kArrays) {
+        const SceneArray &array = b.*a.array;
+        pipeline.bindBuffer(a.storageBinding, array.buffer.handle(),
+                            std::min<uint64_t>(array.buffer.size(), limits.storageBytes));
+        if (a.texelBinding != kNoTexelBinding)
+            pipeline.bindTexelBuffer(a.texelBinding, array.texels.handle());
+    }
+}
+
+std::vector<VkDescriptorType> traceDescriptorTypes() {
+    std::vector<VkDescriptorType> types(kTraceBindingCount, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    types[kBindingAccumImage] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    types[kBindingAovImage] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    for (const ArrayBinding &a : kArrays)
+        if (a.texelBinding != kNoTexelBinding)
+            types[a.texelBinding] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    return types;
+}
+
+} // namespace prism

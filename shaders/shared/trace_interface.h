@@ -1,0 +1,52 @@
+// The tracer's interface with the host, named once for both languages: descriptor bindings
+// (set 0) and specialization-constant ids of trace.comp. shaders/trace_bindings.glsl declares
+// the resources with these numbers; engine/render binds them by the same names. The descriptor
+// types are the shader's own: a host binding of the wrong type fails Vulkan validation, which is
+// on in every test (docs/design.md, "Shader-host contracts").
+#ifndef PRISM_TRACE_INTERFACE_H
+#define PRISM_TRACE_INTERFACE_H
+#include "glsl_compat.h"
+
+PRISM_NAMESPACE_BEGIN
+
+// Images.
+PRISM_CONST(uint, kBindingAccumImage, 0u); // rgba32f: sum of sample radiance, alpha = samples
+PRISM_CONST(uint, kBindingAovImage, 1u);   // rgba32f: xyz normal, w depth
+// Storage buffers.
+PRISM_CONST(uint, kBindingStats, 2u); // GpuStats, written with atomics
+PRISM_CONST(uint, kBindingHeader, 3u);
+PRISM_CONST(uint, kBindingSpheres, 4u);
+PRISM_CONST(uint, kBindingPlanes, 5u);
+PRISM_CONST(uint, kBindingTriangles, 6u);
+PRISM_CONST(uint, kBindingTriangleShading, 7u);
+PRISM_CONST(uint, kBindingMaterials, 8u);
+PRISM_CONST(uint, kBindingLights, 9u);
+PRISM_CONST(uint, kBindingCellStart, 10u);
+PRISM_CONST(uint, kBindingCellPrimitives, 11u);
+PRISM_CONST(uint, kBindingTextures, 12u);
+PRISM_CONST(uint, kBindingTexels, 13u);
+// Uniform texel buffers over the same arrays (read instead when TEXEL_BUFFERS is on).
+PRISM_CONST(uint, kBindingCellStartTexels, 14u);       // r32ui
+PRISM_CONST(uint, kBindingCellPrimitiveTexels, 15u);   // r32ui
+PRISM_CONST(uint, kBindingSphereTexels, 16u);          // rgba32f, 2 per GpuSphere
+PRISM_CONST(uint, kBindingTriangleTexels, 17u);        // rgba32f, 3 per GpuTriangle
+PRISM_CONST(uint, kBindingImageTexels, 18u);           // rgba32f, the texture texels
+PRISM_CONST(uint, kBindingTriangleShadingTexels, 19u); // rgba32f, 5 per GpuTriangleShading
+PRISM_CONST(uint, kTraceBindingCount, 20u);
+
+// Specialization constants: features a scene does not use are compiled out.
+PRISM_CONST(uint, kSpecKinds, 0u); // bit k: the scene has primitives of kind k
+PRISM_CONST(uint, kSpecHasReflection, 1u);
+PRISM_CONST(uint, kSpecHasTransmission, 2u);
+PRISM_CONST(uint, kSpecHasTextures, 3u);
+PRISM_CONST(uint, kSpecHasAreaLights, 4u);
+PRISM_CONST(uint, kSpecHasVertexNormals, 5u);
+PRISM_CONST(uint, kSpecHasShadows, 6u);
+PRISM_CONST(uint, kSpecWriteAov, 7u);
+PRISM_CONST(uint, kSpecLoopBudget, 8u); // loop iterations per invocation, 0: unlimited
+PRISM_CONST(uint, kSpecStackSize, 9u);  // 2 * maxDepth - 1
+PRISM_CONST(uint, kSpecTexelBuffers, 10u);
+
+PRISM_NAMESPACE_END
+
+#endif

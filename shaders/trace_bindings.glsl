@@ -1,0 +1,128 @@
+// The tracer's resources, declared with the names of shared/trace_interface.h, and the only
+// code that indexes them: everything else reads the scene through the accessors below. An array
+// that has a texel view is read through it whenever TEXEL_BUFFERS is on, so its storage binding
+// (capped at maxStorageBufferRange) is never read past its end.
+
+// Primitive kinds the scene has (bit k: kind k of shared/primitive_kinds.h).
+layout(constant_id = kSpecKinds) const uint KINDS = 0xFFu;
+const bool HAS_SPHERES = (KINDS & (1u << kKindSphere)) != 0u;
+const bool HAS_PLANES = (KINDS & (1u << kKindPlane)) != 0u;
+const bool HAS_TRIANGLES = (KINDS & (1u << kKindTriangle)) != 0u;
+layout(constant_id = kSpecHasReflection) const bool HAS_REFLECTION = true;
+layout(constant_id = kSpecHasTransmission) const bool HAS_TRANSMISSION = true;
+layout(constant_id = kSpecHasTextures) const bool HAS_TEXTURES = true;
+layout(constant_id = kSpecHasAreaLights) const bool HAS_AREA_LIGHTS = true;
+layout(constant_id = kSpecHasVertexNormals) const bool HAS_VERTEX_NORMALS = true;
+layout(constant_id = kSpecHasShadows) const bool HAS_SHADOWS = true;
+layout(constant_id = kSpecWriteAov) const bool WRITE_AOV = false;
+// Loop iterations one invocation may run (0: unlimited). lavapipe stops any invocation after
+// 65,535 loop iterations without telling anyone; we stop first and report it.
+layout(constant_id = kSpecLoopBudget) const uint LOOP_BUDGET = 0u;
+layout(constant_id = kSpecStackSize) const uint STACK_SIZE = 9u;
+// Read the arrays that have texel views through them instead of storage buffers (faster on
+// lavapipe, and not capped at maxStorageBufferRange; docs/benchmarks.md).
+layout(constant_id = kSpecTexelBuffers) const bool TEXEL_BUFFERS = false;
+
+layout(set = 0, binding = kBindingAccumImage, rgba32f) uniform image2D accumImage;
+layout(set = 0, binding = kBindingAovImage, rgba32f) uniform writeonly image2D aovImage;
+layout(std430, set = 0, binding = kBindingStats) buffer StatsBuffer { GpuStats stats; };
+layout(std430, set = 0, binding = kBindingHeader) readonly buffer HeaderBuffer {
+    GpuSceneHeader header;
+};
+layout(std430, set = 0, binding = kBindingSpheres) readonly buffer SphereBuffer {
+    GpuSphere sphereArray[];
+};
+layout(std430, set = 0, binding = kBindingPlanes) readonly buffer PlaneBuffer {
+    GpuPlane planeArray[];
+};
+layout(std430, set = 0, binding = kBindingTriangles) readonly buffer TriangleBuffer {
+    GpuTriangle triangleArray[];
+};
+layout(std430, set = 0, binding = kBindingTriangleShading) readonly buffer ShadingBuffer {
+    GpuTriangleShading shadingArray[];
+};
+layout(std430, set = 0, binding = kBindingMaterials) readonly buffer MaterialBuffer {
+    GpuMaterial materialArray[];
+};
+layout(std430, set = 0, binding = kBindingLights) readonly buffer LightBuffer {
+    GpuLight lightArray[];
+};
+layout(std430, set = 0, binding = kBindingCellStart) readonly buffer CellStartBuffer {
+    uint cellStartArray[];
+};
+layout(std430, set = 0, binding = kBindingCellPrimitives) readonly buffer CellPrimitiveBuffer {
+    uint cellPrimitiveArray[];
+};
+layout(std430, set = 0, binding = kBindingTextures) readonly buffer TextureBuffer {
+    GpuTexture textureArray[];
+};
+layout(std430, set = 0, binding = kBindingTexels) readonly buffer TexelBuffer {
+    vec4 texelArray[];
+};
+layout(set = 0, binding = kBindingCellStartTexels) uniform usamplerBuffer cellStartTexels;
+layout(set = 0, binding = kBindingCellPrimitiveTexels) uniform usamplerBuffer cellPrimitiveTexels;
+layout(set = 0, binding = kBindingSphereTexels) uniform samplerBuffer sphereTexels;
+layout(set = 0, binding = kBindingTriangleTexels) uniform samplerBuffer triangleTexels;
+layout(set = 0, binding = kBindingImageTexels) uniform samplerBuffer imageTexels;
+layout(set = 0, binding = kBindingTriangleShadingTexels) uniform samplerBuffer shadingTexels;
+
+layout(push_constant) uniform FrameBlock { GpuFrameParams frame; };
+
+// Arrays with texel views: through whichever binding TEXEL_BUFFERS selects.
+uint cellStartAt(uint i) {
+    return TEXEL_BUFFERS ? texelFetch(cellStartTexels, int(i)).x : cellStartArray[i];
+}
+uint cellPrimitiveAt(uint k) {
+    return TEXEL_BUFFERS ? texelFetch(cellPrimitiveTexels, int(k)).x : cellPrimitiveArray[k];
+}
+vec4 sphereCenterRadius(uint i) { // the intersection loop needs only this half
+    return TEXEL_BUFFERS ? texelFetch(sphereTexels, int(2u * i)) : sphereArray[i].centerRadius;
+}
+GpuSphere sphereAt(uint i) {
+    if (TEXEL_BUFFERS)
+        return GpuSphere(texelFetch(sphereTexels, int(2u * i)),
+                         texelFetch(sphereTexels, int(2u * i + 1u)));
+    return sphereArray[i];
+}
+vec3 triangleVertex(uint tri, uint corner) {
+    if (TEXEL_BUFFERS)
+        return texelFetch(triangleTexels, int(3u * tri + corner)).xyz;
+    return corner == 0u ? triangleArray[tri].v0.xyz
+                        : (corner == 1u ? triangleArray[tri].v1.xyz : triangleArray[tri].v2.xyz);
+}
+GpuTriangle triangleAt(uint i) {
+    if (TEXEL_BUFFERS)
+        return GpuTriangle(texelFetch(triangleTexels, int(3u * i)),
+                           texelFetch(triangleTexels, int(3u * i + 1u)),
+                           texelFetch(triangleTexels, int(3u * i + 2u)));
+    return triangleArray[i];
+}
+GpuTriangleShading triangleShadingAt(uint i) {
+    if (TEXEL_BUFFERS)
+        return GpuTriangleShading(
+            texelFetch(shadingTexels, int(5u * i)), texelFetch(shadingTexels, int(5u * i + 1u)),
+            texelFetch(shadingTexels, int(5u * i + 2u)), texelFetch(shadingTexels, int(5u * i + 3u)),
+            texelFetch(shadingTexels, int(5u * i + 4u)));
+    return shadingArray[i];
+}
+vec4 textureTexel(uint i) {
+    return TEXEL_BUFFERS ? texelFetch(imageTexels, int(i)) : texelArray[i];
+}
+
+// Storage-only arrays: small (one element per plane, material, light, texture), refused by name
+// on the host when larger than a storage binding may be.
+vec4 planeEquation(uint i) { // xyz unit normal, w offset: all the intersection loop needs
+    return planeArray[i].normalOffset;
+}
+GpuPlane planeAt(uint i) {
+    return planeArray[i];
+}
+GpuMaterial materialAt(uint i) {
+    return materialArray[i];
+}
+GpuLight lightAt(uint i) {
+    return lightArray[i];
+}
+GpuTexture textureAt(uint i) {
+    return textureArray[i];
+}

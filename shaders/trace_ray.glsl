@@ -1,0 +1,61 @@
+// The grid walk, written once and compiled twice by traverse.glsl: as TRACE_RAY_NAME with
+// TRACE_RAY_ANY_HIT 0 (closest hit) and 1 (any hit, for shadow rays). The mode is a preprocessor
+// switch rather than a bool parameter so that each mode compiles to exactly the loop it had as
+// a walker of its own; the parameter, constant at every call, measured 3% slower on lavapipe.
+// Hits count on the open segment 0 < t < tMax.
+bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
+    hit.t = tMax;
+    hit.kind = kKindNone;
+    hit.index = 0u;
+    hit.b12 = vec2(0.0);
+    if (HAS_PLANES) {
+        for (uint i = 0u; i < headerPlaneCount(header); ++i) {
+            if (!loopTick()) break;
+            float t;
+            if (intersectPlane(origin, dir, planeEquation(i), hit.t, t)) {
+                hit.t = t;
+                hit.kind = kKindPlane;
+                hit.index = i;
+#if TRACE_RAY_ANY_HIT
+                return true;
+#endif
+            }
+        }
+    }
+    if (HAS_SPHERES || HAS_TRIANGLES) {
+        vec3 invDir = 1.0 / dir;
+        float tEnter, tExit;
+        if (clipToGrid(origin, invDir, tEnter, tExit) && tEnter < hit.t) {
+            WatertightRay wray = makeWatertightRay(dir);
+            GridWalk walk = startWalk(origin, dir, invDir, tEnter);
+            bool walking = true;
+            while (walking) {
+                if (!loopTick()) break;
+                float tCellExit = min(min(walk.tNext.x, walk.tNext.y), walk.tNext.z);
+                uint cell = cellIndex(walk.cell);
+                uint end = cellStartAt(cell + 1u);
+#if TRACE_RAY_ANY_HIT
+                for (uint k = cellStartAt(cell); k < end && hit.kind == kKindNone; ++k) {
+#else
+                for (uint k = cellStartAt(cell); k < end; ++k) {
+#endif
+                    if (!loopTick()) break;
+                    testPrimitive(cellPrimitiveAt(k), origin, dir, wray, hit);
+                }
+#if TRACE_RAY_ANY_HIT
+                // Any hit will do: stop at the first, or where the segment or the grid ends.
+                walking = hit.kind == kKindNone && tCellExit < min(tExit, tMax) &&
+                          stepWalk(walk) && !gOverBudget;
+#else
+                // A grid hit is accepted only once the walk has reached the cell where it lies
+                // (t <= the cell's exit), so the first accepted hit is the nearest.
+                walking = hit.t > tCellExit && tCellExit < tExit && stepWalk(walk) &&
+                          !gOverBudget;
+#endif
+                loopSync();
+            }
+            loopSync();
+        }
+    }
+    return hit.kind != kKindNone;
+}
