@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "accel/cell_binner.h"
+#include "accel/cell_expansion.h"
 #include "core/error.h"
 #include "shared/gpu_types.h"
 
@@ -44,35 +45,32 @@ public:
             makeLeaf(entry, voxelMin, voxelMin + glm::ivec3(1 << sizeShift), refs);
             return;
         }
-        uint32_t childShift = sizeShift - split, parts = 1u << split;
-        Lattice children;
-        children.origin = glm::dvec3(grid_.boundsMin);
-        children.cellSize = voxelSize_ * double(1u << childShift);
-        children.lo = voxelMin >> int(childShift);
-        children.hi = children.lo + glm::ivec3(int(parts));
-        children.magnitude = magnitude_;
-        std::vector<std::pair<uint32_t, uint32_t>> pairs;
-        CellBinner binner(children);
-        for (uint32_t id : refs)
-            binner.bin(id, primitives_, pairs);
-        std::vector<std::vector<uint32_t>> childRefs(children.count());
-        size_t fullest = 0;
-        for (const auto &[child, id] : pairs) {
-            childRefs[child].push_back(id);
-            fullest = std::max(fullest, childRefs[child].size());
-        }
         // Surface area heuristic (MacDonald & Booth 1990) for a uniform split: a ray through
         // this cell tests its n primitives; split, it steps through about 1.5 parts per axis
         // and meets each part with probability area(part) / area(cell) = 1 / parts^2. Where
-        // primitives are large against the parts (overlapping spheres) the split only copies
-        // references, and the cell stays whole.
-        double parts2 = double(parts) * double(parts);
-        double splitCost = kStepCost * 1.5 * double(parts) + double(pairs.size()) / parts2;
-        pairs = {};
-        if (splitCost >= double(n) || budgetSpent()) {
+        // primitives are large against the parts (overlapping spheres) a split only copies
+        // references. The split the density asks for and each coarser one are priced; the
+        // cheapest is made if it beats not splitting.
+        Split best;
+        double bestCost = double(n);
+        for (uint32_t d = split; d >= 1; --d) {
+            Split candidate = splitInto(refs, voxelMin, sizeShift, d);
+            double parts = double(1u << d);
+            double cost = kStepCost * 1.5 * parts + double(candidate.references) / (parts * parts);
+            if (cost < bestCost) {
+                bestCost = cost;
+                best = std::move(candidate);
+            }
+        }
+        if (best.split == 0 || budgetSpent()) {
             makeLeaf(entry, voxelMin, voxelMin + glm::ivec3(1 << sizeShift), refs);
             return;
         }
+        split = best.split;
+        uint32_t childShift = sizeShift - split, parts = 1u << split;
+        Lattice &children = best.children;
+        std::vector<std::vector<uint32_t>> &childRefs = best.childRefs;
+        size_t fullest = best.fullest;
         // A split that leaves some part with every primitive may still help one level down (a
         // small cluster in a big cell), but two in a row mean the primitives cannot be told
         // apart (all in one point, a fan around one vertex): the cell stays whole. This also
@@ -101,6 +99,37 @@ public:
     }
 
 private:
+    struct Split {
+        uint32_t split = 0; // parts per axis: 2^split; 0: none
+        Lattice children;
+        std::vector<std::vector<uint32_t>> childRefs;
+        size_t references = 0; // over all parts
+        size_t fullest = 0;
+    };
+
+    Split splitInto(const std::vector<uint32_t> &refs, glm::ivec3 voxelMin, uint32_t sizeShift,
+                    uint32_t split) const {
+        Split s;
+        s.split = split;
+        uint32_t childShift = sizeShift - split;
+        s.children.origin = glm::dvec3(grid_.boundsMin);
+        s.children.cellSize = voxelSize_ * double(1u << childShift);
+        s.children.lo = voxelMin >> int(childShift);
+        s.children.hi = s.children.lo + glm::ivec3(1 << split);
+        s.children.magnitude = magnitude_;
+        std::vector<std::pair<uint32_t, uint32_t>> pairs;
+        CellBinner binner(s.children);
+        for (uint32_t id : refs)
+            binner.bin(id, primitives_, pairs);
+        s.childRefs.resize(s.children.count());
+        for (const auto &[child, id] : pairs) {
+            s.childRefs[child].push_back(id);
+            s.fullest = std::max(s.fullest, s.childRefs[child].size());
+        }
+        s.references = pairs.size();
+        return s;
+    }
+
     // Cells and entries at most ~64 per primitive (and a floor for small scenes): a safety net
     // on memory and build time, far above what the cost model asks for.
     bool budgetSpent() const { return grid_.entries.size() + grid_.cellBoxes.size() > budget_; }
@@ -162,6 +191,7 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives,
                 splitter.build(t, glm::ivec3(x, y, z) << int(grid.shift), grid.shift, 0, 0,
                                std::move(topRefs[t]));
             }
+    expandCells(grid);
 }
 
 glm::uvec4 packCellBox(glm::ivec3 min, glm::ivec3 max) {

@@ -17,8 +17,9 @@ constexpr uint32_t kAdaptiveLeafPrimitives = 2;
 constexpr uint32_t kAdaptiveMaxDepth = 4;
 constexpr uint32_t kAdaptiveMaxSplit = 3;
 
-// Fills grid.shift, entries, cellBoxes, cellStart, cellPrimitives, depth and maxPerCell; the
-// grid's bounds, top resolution and cell size are already set. Cells split to about
+// Fills grid.shift, entries, cellBoxes (expanded: accel/cell_expansion.h), cellStart,
+// cellPrimitives, depth and maxPerCell; the grid's bounds, top resolution and cell size are
+// already set. Cells split to about
 // options.density cells per primitive they hold. Throws prism::Error when the grid would need
 // more than 2^28 cells or entries.
 void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const GridOptions &options);
