@@ -69,10 +69,6 @@ PackedScene packScene(const Scene &scene, const Grid &grid) {
 
     packed.cellStart = grid.cellStart;
     packed.cellPrimitives = grid.cellPrimitives;
-    packed.gridEntries = grid.entries;
-    packed.cellBoxes = grid.cellBoxes;
-    h.voxelSize = glm::vec4(grid.voxelSize(), 0.0f);
-    h.voxels = glm::uvec4(glm::uvec3(grid.voxelResolution()), grid.shift);
     return packed;
 }
 

@@ -46,7 +46,6 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     f.maxDepth = options.maxDepth;
     f.texelBuffers = options.texelBuffers;
     f.writeAov = options.writeAov;
-    f.adaptiveGrid = grid.adaptive();
     f.shadows = options.shadows;
     f.reflection = f.reflection && options.reflection;
     f.transmission = f.transmission && options.transmission;
@@ -73,8 +72,7 @@ std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
             {gpu::kSpecWriteAov, writeAov},
             {gpu::kSpecLoopBudget, loopBudget},
             {gpu::kSpecStackSize, stackSize},
-            {gpu::kSpecTexelBuffers, texelBuffers},
-            {gpu::kSpecAdaptiveGrid, adaptiveGrid}};
+            {gpu::kSpecTexelBuffers, texelBuffers}};
 }
 
 } // namespace prism
