@@ -22,6 +22,7 @@ layout(constant_id = kSpecStackSize) const uint STACK_SIZE = 9u;
 // Read the arrays that have texel views through them instead of storage buffers (faster on
 // lavapipe, and not capped at maxStorageBufferRange; docs/benchmarks.md).
 layout(constant_id = kSpecTexelBuffers) const bool TEXEL_BUFFERS = false;
+layout(constant_id = kSpecAdaptiveGrid) const bool ADAPTIVE_GRID = false;
 
 layout(set = 0, binding = kBindingAccumImage, rgba32f) uniform image2D accumImage;
 layout(set = 0, binding = kBindingAovImage, rgba32f) uniform writeonly image2D aovImage;
@@ -59,12 +60,20 @@ layout(std430, set = 0, binding = kBindingTextures) readonly buffer TextureBuffe
 layout(std430, set = 0, binding = kBindingTexels) readonly buffer TexelBuffer {
     vec4 texelArray[];
 };
+layout(std430, set = 0, binding = kBindingGridEntries) readonly buffer GridEntryBuffer {
+    uint gridEntryArray[];
+};
+layout(std430, set = 0, binding = kBindingCellBoxes) readonly buffer CellBoxBuffer {
+    uvec4 cellBoxArray[];
+};
 layout(set = 0, binding = kBindingCellStartTexels) uniform usamplerBuffer cellStartTexels;
 layout(set = 0, binding = kBindingCellPrimitiveTexels) uniform usamplerBuffer cellPrimitiveTexels;
 layout(set = 0, binding = kBindingSphereTexels) uniform samplerBuffer sphereTexels;
 layout(set = 0, binding = kBindingTriangleTexels) uniform samplerBuffer triangleTexels;
 layout(set = 0, binding = kBindingImageTexels) uniform samplerBuffer imageTexels;
 layout(set = 0, binding = kBindingTriangleShadingTexels) uniform samplerBuffer shadingTexels;
+layout(set = 0, binding = kBindingGridEntryTexels) uniform usamplerBuffer gridEntryTexels;
+layout(set = 0, binding = kBindingCellBoxTexels) uniform usamplerBuffer cellBoxTexels;
 
 layout(push_constant) uniform FrameBlock { GpuFrameParams frame; };
 
@@ -74,6 +83,12 @@ uint cellStartAt(uint i) {
 }
 uint cellPrimitiveAt(uint k) {
     return TEXEL_BUFFERS ? texelFetch(cellPrimitiveTexels, int(k)).x : cellPrimitiveArray[k];
+}
+uint gridEntryAt(uint i) {
+    return TEXEL_BUFFERS ? texelFetch(gridEntryTexels, int(i)).x : gridEntryArray[i];
+}
+uvec4 cellBoxAt(uint i) {
+    return TEXEL_BUFFERS ? texelFetch(cellBoxTexels, int(i)) : cellBoxArray[i];
 }
 vec4 sphereCenterRadius(uint i) { // the intersection loop needs only this half
     return TEXEL_BUFFERS ? texelFetch(sphereTexels, int(2u * i)) : sphereArray[i].centerRadius;

@@ -27,12 +27,25 @@ bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
         float tEnter, tExit;
         if (clipToGrid(origin, invDir, tEnter, tExit) && tEnter < hit.t) {
             WatertightRay wray = makeWatertightRay(dir);
-            GridWalk walk = startWalk(origin, dir, invDir, tEnter);
+            // A regular grid is walked with 3D-DDA, an adaptive one from cell box to cell box.
+            GridWalk walk;
+            BoxWalk boxWalk;
+            if (ADAPTIVE_GRID)
+                boxWalk = startBoxWalk(origin, dir, tEnter);
+            else
+                walk = startWalk(origin, dir, invDir, tEnter);
             bool walking = true;
             while (walking) {
                 if (!loopTick()) break;
-                float tCellExit = min(min(walk.tNext.x, walk.tNext.y), walk.tNext.z);
-                uint cell = cellIndex(walk.cell);
+                uint cell;
+                float tCellExit;
+                if (ADAPTIVE_GRID) {
+                    cell = enterBoxCell(boxWalk, origin, dir, invDir);
+                    tCellExit = boxWalk.t;
+                } else {
+                    tCellExit = min(min(walk.tNext.x, walk.tNext.y), walk.tNext.z);
+                    cell = cellIndex(walk.cell);
+                }
                 uint end = cellStartAt(cell + 1u);
 #if TRACE_RAY_ANY_HIT
                 for (uint k = cellStartAt(cell); k < end && hit.kind == kKindNone; ++k) {
@@ -44,14 +57,15 @@ bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
                 }
 #if TRACE_RAY_ANY_HIT
                 // Any hit will do: stop at the first, or where the segment or the grid ends.
-                walking = hit.kind == kKindNone && tCellExit < min(tExit, tMax) &&
-                          stepWalk(walk) && !gOverBudget;
+                walking = hit.kind == kKindNone && tCellExit < min(tExit, tMax);
 #else
                 // A grid hit is accepted only once the walk has reached the cell where it lies
                 // (t <= the cell's exit), so the first accepted hit is the nearest.
-                walking = hit.t > tCellExit && tCellExit < tExit && stepWalk(walk) &&
-                          !gOverBudget;
+                walking = hit.t > tCellExit && tCellExit < tExit;
 #endif
+                walking = walking &&
+                          (ADAPTIVE_GRID ? stepBoxWalk(boxWalk, origin, dir) : stepWalk(walk)) &&
+                          !gOverBudget;
                 loopSync();
             }
             loopSync();

@@ -79,6 +79,69 @@ uint cellIndex(ivec3 cell) {
     return uint(cell.x) + header.gridRes.x * (uint(cell.y) + header.gridRes.y * uint(cell.z));
 }
 
+// The adaptive grid's cell that holds voxel v: down the voxel map from v's top cell.
+uint adaptiveCellAt(ivec3 v) {
+    int shift = int(header.voxels.w);
+    uint entry = gridEntryAt(cellIndex(v >> shift));
+    while (entrySplit(entry) != 0u) {
+        if (!loopTick()) break;
+        int split = int(entrySplit(entry));
+        shift -= split;
+        ivec3 part = (v >> shift) & ((1 << split) - 1);
+        entry = gridEntryAt(entryTarget(entry) + uint(part.x + (part.y << split) +
+                                                      (part.z << (2 * split))));
+    }
+    // lavapipe counts a loop's exit as well; the walk runs this loop at every step, so it is
+    // counted too, to keep the count above lavapipe's.
+    loopTick();
+    return entryTarget(entry);
+}
+
+// The adaptive grid's walker: the current voxel, and of the current cell its box (in voxels),
+// exit distance and exit axis.
+struct BoxWalk {
+    ivec3 voxel;
+    ivec3 boxMin, boxMax;
+    float t; // the current cell's exit (before enterBoxCell: where the walk enters)
+    int axis;
+};
+
+BoxWalk startBoxWalk(vec3 origin, vec3 dir, float tEnter) {
+    BoxWalk w;
+    vec3 p = (origin + tEnter * dir - header.gridMin.xyz) / header.voxelSize.xyz;
+    w.voxel = clamp(ivec3(floor(p)), ivec3(0), ivec3(header.voxels.xyz) - 1);
+    w.t = tEnter;
+    return w;
+}
+
+// Finds the cell holding the walker's voxel and where the ray leaves its box: through the
+// nearest face ahead. Returns the cell; w.t becomes its exit.
+uint enterBoxCell(inout BoxWalk w, vec3 origin, vec3 dir, vec3 invDir) {
+    uint cell = adaptiveCellAt(w.voxel);
+    uvec4 box = cellBoxAt(cell);
+    w.boxMin = cellBoxMin(box);
+    w.boxMax = cellBoxMax(box);
+    vec3 face = header.gridMin.xyz +
+                vec3(mix(w.boxMin, w.boxMax, greaterThan(dir, vec3(0.0)))) * header.voxelSize.xyz;
+    vec3 tFace = mix((face - origin) * invDir, vec3(kInfinity), equal(dir, vec3(0.0)));
+    w.axis = tFace.x < tFace.y ? (tFace.x < tFace.z ? 0 : 2) : (tFace.y < tFace.z ? 1 : 2);
+    w.t = max(tFace[w.axis], w.t);
+    return cell;
+}
+
+// Moves to the voxel just past the exit face, at the exit point; false when that leaves the
+// grid. The other coordinates stay inside the box and never move against the ray: expanded
+// boxes overlap, and where a ray passes exactly along the edge two of them share, rounding
+// would otherwise send it back and forth between them for ever.
+bool stepBoxWalk(inout BoxWalk w, vec3 origin, vec3 dir) {
+    vec3 p = (origin + w.t * dir - header.gridMin.xyz) / header.voxelSize.xyz;
+    ivec3 next = clamp(ivec3(floor(p)), w.boxMin, w.boxMax - 1);
+    next = mix(min(next, w.voxel), max(next, w.voxel), greaterThan(dir, vec3(0.0)));
+    next[w.axis] = dir[w.axis] > 0.0 ? w.boxMax[w.axis] : w.boxMin[w.axis] - 1;
+    w.voxel = next;
+    return next[w.axis] >= 0 && next[w.axis] < int(header.voxels[w.axis]);
+}
+
 // One walk for both kinds of query (trace_ray.glsl), planes first, then the grid.
 #define TRACE_RAY_NAME traceClosest
 #define TRACE_RAY_ANY_HIT 0

@@ -17,6 +17,10 @@ struct GridOptions {
         Auto,  // cells ~ density * primitives, aspect following the bounds
         Off,   // one cell holding everything: every ray tests every primitive
         Fixed, // resolution given by the user
+        // A coarse top grid whose crowded cells are split again, level by level, each to its
+        // own density (a power of two per axis): dense regions get small cells, sparse
+        // regions large ones, so a small dense object in a large scene is not one cell.
+        Adaptive,
     };
     Mode mode = Mode::Auto;
     glm::ivec3 resolution{1}; // Fixed only
@@ -24,24 +28,50 @@ struct GridOptions {
     float density = 4.0f;
 };
 
-// Parses --grid's argument: "auto", "off", "N" (N^3) or "NxNyNz", each count in 1..1024.
+// Parses --grid's argument: "auto", "off", "adaptive", "N" (N^3) or "NxNyNz", each count in
+// 1..1024.
 // Throws prism::Error with a message naming the bad text.
 GridOptions parseGridOption(std::string_view text);
 
+// Either a regular grid or an adaptive one (entries not empty). The adaptive grid's cells have
+// boxes on a virtual grid of voxels, 2^shift per top cell and axis; its voxel map (entries)
+// finds the cell that holds a voxel, and a ray steps from the exit face of one cell's box to
+// the cell behind it.
 struct Grid {
     glm::vec3 boundsMin{0.0f};
     glm::vec3 boundsMax{1.0f};
-    glm::ivec3 resolution{1};
-    glm::vec3 cellSize{1.0f};
-    // Cell (x, y, z) has index x + res.x * (y + res.y * z); its primitives are
-    // cellPrimitives[cellStart[i] .. cellStart[i + 1]), ids as in scene/primitive_ids.h.
+    glm::ivec3 resolution{1}; // cells per axis; adaptive: top cells per axis
+    glm::vec3 cellSize{1.0f}; // adaptive: the top cells' size
+    // Regular: cell (x, y, z) has index x + res.x * (y + res.y * z). Both: a cell's primitives
+    // are cellPrimitives[cellStart[i] .. cellStart[i + 1]), ids as in scene/primitive_ids.h.
     std::vector<uint32_t> cellStart;
     std::vector<uint32_t> cellPrimitives;
 
+    // Adaptive only. The voxel map is a tree of entries whose first topCellCount() are the top
+    // cells (indexed like regular cells). An entry with split d = entry & 15 > 0 divides its
+    // box into 2^d parts per axis whose entries start at entry >> 4 (x fastest); an entry with
+    // d = 0 is a leaf: cell entry >> 4. cellBoxes[c] is cell c's box in voxels (packCellBox).
+    uint32_t shift = 0;
+    std::vector<uint32_t> entries;
+    std::vector<glm::uvec4> cellBoxes;
+    uint32_t depth = 0; // the deepest leaf's level below the top (a lookup's iterations)
+
     uint32_t maxPerCell = 0; // the fullest cell's count, for --stats and the benchmarks
 
-    uint64_t cellCount() const {
+    bool adaptive() const { return !entries.empty(); }
+    // Cells holding primitive lists.
+    uint64_t cellCount() const { return adaptive() ? cellBoxes.size() : topCellCount(); }
+    uint64_t topCellCount() const {
         return uint64_t(resolution.x) * uint64_t(resolution.y) * uint64_t(resolution.z);
+    }
+    // Voxels per axis of the virtual grid (regular: cells per axis). A ray crosses at most
+    // their sum of cells.
+    glm::ivec3 voxelResolution() const { return resolution * (1 << shift); }
+    glm::vec3 voxelSize() const { return cellSize / float(1u << shift); }
+    // Bytes the grid takes on the GPU.
+    uint64_t bytes() const {
+        return 4 * (cellStart.size() + cellPrimitives.size() + entries.size()) +
+               16 * cellBoxes.size();
     }
     uint32_t cellIndex(glm::ivec3 cell) const {
         return uint32_t(cell.x + resolution.x * (cell.y + resolution.y * cell.z));
@@ -49,5 +79,9 @@ struct Grid {
 };
 
 Grid buildGrid(const Scene &scene, const GridOptions &options = {});
+
+// A cell box in voxels, as the tracer reads it: 16 bits per coordinate.
+glm::uvec4 packCellBox(glm::ivec3 min, glm::ivec3 max);
+void unpackCellBox(const glm::uvec4 &packed, glm::ivec3 &min, glm::ivec3 &max);
 
 } // namespace prism

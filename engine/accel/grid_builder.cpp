@@ -5,7 +5,9 @@
 #include <string>
 #include <utility>
 
+#include "accel/adaptive_grid.h"
 #include "accel/bounds.h"
+#include "accel/cell_binner.h"
 #include "accel/finite_primitives.h"
 #include "accel/grid.h"
 #include "accel/grid_resolution.h"
@@ -35,47 +37,7 @@ Aabb paddedBounds(Aabb b) {
     return {b.min - pad, b.max + pad};
 }
 
-// Pairs list each (cell, primitive id) overlap once; ids as in scene/primitive_ids.h.
-class CellBinner {
-public:
-    explicit CellBinner(const Grid &grid) : grid_(grid) {
-        glm::dvec3 cell(grid.cellSize), mag = glm::max(glm::abs(glm::dvec3(grid.boundsMin)),
-                                                       glm::abs(glm::dvec3(grid.boundsMax)));
-        double largest = std::max({mag.x, mag.y, mag.z});
-        // Cells are widened a little so a hit found by the shader's float DDA near a cell face
-        // is listed in the cell on either side of it (rounding may put the walk in either).
-        slack_ = 1e-4 * cell + glm::dvec3(4e-7 * largest);
-    }
-
-    void bin(uint32_t id, const FinitePrimitives &primitives) {
-        Aabb bounds = primitives.bounds(id);
-        glm::ivec3 lo = cellOf(bounds.min - slack_), hi = cellOf(bounds.max + slack_);
-        for (int z = lo.z; z <= hi.z; ++z)
-            for (int y = lo.y; y <= hi.y; ++y)
-                for (int x = lo.x; x <= hi.x; ++x) {
-                    glm::dvec3 cmin = glm::dvec3(grid_.boundsMin) +
-                                      glm::dvec3(x, y, z) * glm::dvec3(grid_.cellSize);
-                    glm::dvec3 cmax = cmin + glm::dvec3(grid_.cellSize);
-                    if (primitives.overlapsBox(id, cmin - slack_, cmax + slack_))
-                        pairs_.emplace_back(grid_.cellIndex({x, y, z}), id);
-                }
-    }
-
-    std::vector<std::pair<uint32_t, uint32_t>> &pairs() { return pairs_; }
-
-private:
-    glm::ivec3 cellOf(const glm::dvec3 &p) const {
-        glm::dvec3 f = glm::floor((p - glm::dvec3(grid_.boundsMin)) / glm::dvec3(grid_.cellSize));
-        return glm::clamp(glm::ivec3(glm::clamp(f, glm::dvec3(-1.0), glm::dvec3(1e9))),
-                          glm::ivec3(0), grid_.resolution - 1);
-    }
-
-    const Grid &grid_;
-    glm::dvec3 slack_;
-    std::vector<std::pair<uint32_t, uint32_t>> pairs_;
-};
-
-void fillCells(Grid &grid, std::vector<std::pair<uint32_t, uint32_t>> &pairs) {
+void fillCells(Grid &grid, const std::vector<std::pair<uint32_t, uint32_t>> &pairs) {
     uint64_t cells = grid.cellCount();
     if (pairs.size() >= uint64_t(UINT32_MAX))
         throw Error("grid holds more than 2^32 primitive references; use a coarser --grid");
@@ -95,6 +57,18 @@ void fillCells(Grid &grid, std::vector<std::pair<uint32_t, uint32_t>> &pairs) {
 }
 
 } // namespace
+
+Lattice wholeGrid(const Grid &grid) {
+    Lattice l;
+    l.origin = glm::dvec3(grid.boundsMin);
+    l.cellSize = glm::dvec3(grid.cellSize);
+    l.lo = glm::ivec3(0);
+    l.hi = grid.resolution;
+    glm::dvec3 mag =
+        glm::max(glm::abs(glm::dvec3(grid.boundsMin)), glm::abs(glm::dvec3(grid.boundsMax)));
+    l.magnitude = std::max({mag.x, mag.y, mag.z});
+    return l;
+}
 
 Grid buildGrid(const Scene &scene, const GridOptions &options) {
     FinitePrimitives finite(scene);
@@ -117,13 +91,17 @@ Grid buildGrid(const Scene &scene, const GridOptions &options) {
     case GridOptions::Mode::Fixed:
         grid.resolution = options.resolution;
         break;
+    case GridOptions::Mode::Adaptive:
+        grid.resolution = chooseResolution(glm::dvec3(grid.boundsMax - grid.boundsMin), primitives,
+                                           kAdaptiveTopDensity);
+        break;
     case GridOptions::Mode::Auto:
         grid.resolution = chooseResolution(glm::dvec3(grid.boundsMax - grid.boundsMin), primitives,
                                            double(options.density));
         break;
     }
-    if (grid.cellCount() > kMaxGridCells)
-        throw Error("grid of " + std::to_string(grid.cellCount()) + " cells is more than " +
+    if (grid.topCellCount() > kMaxGridCells)
+        throw Error("grid of " + std::to_string(grid.topCellCount()) + " cells is more than " +
                     std::to_string(kMaxGridCells));
     grid.cellSize = (grid.boundsMax - grid.boundsMin) / glm::vec3(grid.resolution);
 
@@ -136,10 +114,15 @@ Grid buildGrid(const Scene &scene, const GridOptions &options) {
         return grid;
     }
 
-    CellBinner binner(grid);
+    if (options.mode == GridOptions::Mode::Adaptive) {
+        buildAdaptiveCells(grid, finite, options);
+        return grid;
+    }
+    CellBinner binner(wholeGrid(grid));
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;
     for (uint32_t id = 0; id < primitives; ++id)
-        binner.bin(id, finite);
-    fillCells(grid, binner.pairs());
+        binner.bin(id, finite, pairs);
+    fillCells(grid, pairs);
     return grid;
 }
 

@@ -5,6 +5,67 @@
 
 namespace prism {
 
+// Down the voxel map from v's top cell, as the tracer does (traverse.glsl).
+uint32_t adaptiveCellAt(const Grid &grid, glm::ivec3 v) {
+    uint32_t entry = grid.entries[grid.cellIndex(v >> int(grid.shift))];
+    int shift = int(grid.shift);
+    while ((entry & 15u) != 0) {
+        int split = int(entry & 15u);
+        shift -= split;
+        glm::ivec3 part = (v >> shift) & ((1 << split) - 1);
+        entry = grid.entries[(entry >> 4) +
+                             uint32_t(part.x + (part.y << split) + (part.z << (2 * split)))];
+    }
+    return entry >> 4;
+}
+
+namespace {
+
+// From cell to cell: each cell's box is left through its nearest exit face, and the next cell is
+// the one holding the voxel just past that face at the exit point (the other coordinates kept
+// inside the box, so the walk always moves on).
+void walkAdaptive(const Grid &grid, const glm::dvec3 &origin, const glm::dvec3 &dir, double tEnter,
+                  double tExit, const std::function<bool(uint32_t, double, double)> &visit) {
+    glm::dvec3 lo(grid.boundsMin), voxel(grid.voxelSize());
+    glm::ivec3 res = grid.voxelResolution();
+    glm::ivec3 v = glm::clamp(glm::ivec3(glm::floor((origin + tEnter * dir - lo) / voxel)),
+                              glm::ivec3(0), res - 1);
+    double t = tEnter;
+    for (;;) {
+        uint32_t cell = adaptiveCellAt(grid, v);
+        glm::ivec3 bmin, bmax;
+        unpackCellBox(grid.cellBoxes[cell], bmin, bmax);
+        double tCellExit = tExit;
+        int axis = -1;
+        for (int a = 0; a < 3; ++a) {
+            if (dir[a] == 0.0)
+                continue;
+            double face = lo[a] + double(dir[a] > 0.0 ? bmax[a] : bmin[a]) * voxel[a];
+            double tFace = (face - origin[a]) / dir[a];
+            if (tFace < tCellExit) {
+                tCellExit = tFace;
+                axis = a;
+            }
+        }
+        tCellExit = std::max(tCellExit, t);
+        if (!visit(cell, t, tCellExit) || axis < 0)
+            return;
+        glm::dvec3 exitPoint = origin + tCellExit * dir;
+        for (int a = 0; a < 3; ++a) {
+            // Inside the box, and never against the ray (see stepBoxWalk in traverse.glsl).
+            int next = std::clamp(int(std::floor((exitPoint[a] - lo[a]) / voxel[a])), bmin[a],
+                                  bmax[a] - 1);
+            v[a] = dir[a] > 0.0 ? std::max(next, v[a]) : std::min(next, v[a]);
+        }
+        v[axis] = dir[axis] > 0.0 ? bmax[axis] : bmin[axis] - 1;
+        if (v[axis] < 0 || v[axis] >= res[axis])
+            return;
+        t = tCellExit;
+    }
+}
+
+} // namespace
+
 void walkGrid(const Grid &grid, const glm::dvec3 &origin, const glm::dvec3 &dir, double tMax,
               const std::function<bool(uint32_t, double, double)> &visit) {
     constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -22,6 +83,10 @@ void walkGrid(const Grid &grid, const glm::dvec3 &origin, const glm::dvec3 &dir,
     }
     if (tEnter > tExit)
         return;
+    if (grid.adaptive()) {
+        walkAdaptive(grid, origin, dir, tEnter, tExit, visit);
+        return;
+    }
     glm::dvec3 entry = origin + tEnter * dir;
     glm::ivec3 cell = glm::clamp(glm::ivec3(glm::floor((entry - lo) / cellSize)), glm::ivec3(0),
                                  grid.resolution - 1);

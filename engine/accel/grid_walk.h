@@ -12,6 +12,9 @@ namespace prism {
 
 // Calls visit(cellIndex, tEnter, tExit) for each cell the ray (origin + t * dir, 0 <= t <
 // tMax) crosses, nearest first, until visit returns false or the ray leaves the grid.
+// The adaptive grid's cell that holds voxel v (voxel coordinates in [0, voxelResolution())).
+uint32_t adaptiveCellAt(const Grid &grid, glm::ivec3 v);
+
 void walkGrid(const Grid &grid, const glm::dvec3 &origin, const glm::dvec3 &dir, double tMax,
               const std::function<bool(uint32_t cell, double tEnter, double tExit)> &visit);
 

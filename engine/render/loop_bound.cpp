@@ -22,7 +22,9 @@ uint64_t traversalIterationBound(const Scene &scene, const Grid &grid) {
     uint64_t iterations = add(scene.planes.size(), 1); // +1: every loop may count its exit too
     if (scene.finitePrimitiveCount() == 0)
         return iterations;
-    uint64_t cellsCrossed = uint64_t(grid.resolution.x) + grid.resolution.y + grid.resolution.z;
+    // A ray crosses at most one cell per voxel boundary (regular grid: voxels are its cells).
+    glm::ivec3 voxels = grid.voxelResolution();
+    uint64_t cellsCrossed = uint64_t(voxels.x) + voxels.y + voxels.z;
     std::vector<uint32_t> counts(grid.cellStart.size() - 1);
     for (size_t c = 0; c < counts.size(); ++c)
         counts[c] = grid.cellStart[c + 1] - grid.cellStart[c];
@@ -31,8 +33,11 @@ uint64_t traversalIterationBound(const Scene &scene, const Grid &grid) {
     uint64_t tests = 0;
     for (size_t c = 0; c < k; ++c)
         tests += counts[c];
-    // DDA steps and their exits, the cells' primitive loops and their exits.
-    return add(iterations, add(mul(2, add(cellsCrossed, 1)), add(tests, cellsCrossed)));
+    // DDA steps and their exits, the cells' primitive loops and their exits; in an adaptive
+    // grid each step also walks the voxel map down to its cell.
+    uint64_t lookups = grid.adaptive() ? mul(cellsCrossed, grid.depth + 1) : 0;
+    return add(add(iterations, lookups),
+               add(mul(2, add(cellsCrossed, 1)), add(tests, cellsCrossed)));
 }
 
 uint64_t invocationIterationBound(const Scene &scene, const Grid &grid,

@@ -18,6 +18,7 @@ struct TexelLayout {
 constexpr TexelLayout kStorageOnly{};
 constexpr TexelLayout kUintTexels{VK_FORMAT_R32_UINT, 4};
 constexpr TexelLayout kVec4Texels{VK_FORMAT_R32G32B32A32_SFLOAT, 16};
+constexpr TexelLayout kUvec4Texels{VK_FORMAT_R32G32B32A32_UINT, 16};
 constexpr uint32_t kNoTexelBinding = ~0u;
 
 class Uploader {
@@ -114,6 +115,10 @@ const ArrayBinding kArrays[] = {
      kStorageOnly},
     {&B::texels, bytesOf<&P::texels>, "texture texel", kBindingTexels, kBindingImageTexels,
      kVec4Texels},
+    {&B::gridEntries, bytesOf<&P::gridEntries>, "grid voxel map", kBindingGridEntries,
+     kBindingGridEntryTexels, kUintTexels},
+    {&B::cellBoxes, bytesOf<&P::cellBoxes>, "grid cell box", kBindingCellBoxes,
+     kBindingCellBoxTexels, kUvec4Texels},
 };
 
 } // namespace

@@ -40,6 +40,8 @@ struct SceneBuffers {
     SceneArray cellPrimitives;
     SceneArray textures;
     SceneArray texels;
+    SceneArray gridEntries;
+    SceneArray cellBoxes;
 };
 
 // Uploads every array. An array larger than the binding it is read through may hold is refused

@@ -69,6 +69,10 @@ PackedScene packScene(const Scene &scene, const Grid &grid) {
 
     packed.cellStart = grid.cellStart;
     packed.cellPrimitives = grid.cellPrimitives;
+    packed.gridEntries = grid.entries;
+    packed.cellBoxes = grid.cellBoxes;
+    h.voxelSize = glm::vec4(grid.voxelSize(), 0.0f);
+    h.voxels = glm::uvec4(glm::uvec3(grid.voxelResolution()), grid.shift);
     return packed;
 }
 

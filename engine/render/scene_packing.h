@@ -21,6 +21,8 @@ struct PackedScene {
     std::vector<glm::vec4> texels;
     std::vector<uint32_t> cellStart;
     std::vector<uint32_t> cellPrimitives;
+    std::vector<uint32_t> gridEntries; // adaptive grid only
+    std::vector<glm::uvec4> cellBoxes; // adaptive grid only
 };
 
 PackedScene packScene(const Scene &scene, const Grid &grid);

@@ -46,6 +46,7 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     f.maxDepth = options.maxDepth;
     f.texelBuffers = options.texelBuffers;
     f.writeAov = options.writeAov;
+    f.adaptiveGrid = grid.adaptive();
     f.shadows = options.shadows;
     f.reflection = f.reflection && options.reflection;
     f.transmission = f.transmission && options.transmission;
@@ -72,7 +73,8 @@ std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
             {gpu::kSpecWriteAov, writeAov},
             {gpu::kSpecLoopBudget, loopBudget},
             {gpu::kSpecStackSize, stackSize},
-            {gpu::kSpecTexelBuffers, texelBuffers}};
+            {gpu::kSpecTexelBuffers, texelBuffers},
+            {gpu::kSpecAdaptiveGrid, adaptiveGrid}};
 }
 
 } // namespace prism

@@ -38,6 +38,7 @@ struct TracerFeatures {
     uint32_t loopBudget = 0; // 0: unlimited
     uint32_t maxDepth = 5;
     bool texelBuffers = false; // arrays with texel views read through them
+    bool adaptiveGrid = false; // the grid is adaptive (accel/grid.h)
 
     bool has(uint32_t kind) const { return (kinds >> kind) & 1u; }
     std::vector<vk::SpecializationConstant> specialization() const;

@@ -29,12 +29,29 @@ struct GpuSceneHeader {
     uvec4 idEnd;     // [kind]: end of that finite kind's grid id range (primitive_kinds.h)
     vec4 background; // rgb
     vec4 ambient;    // rgb: scene ambient light
+    vec4 voxelSize;  // adaptive grid: xyz size of one voxel
+    uvec4 voxels;    // adaptive grid: xyz voxels per axis, w: voxels per top cell (log2)
 };
 PRISM_INLINE uint headerPlaneCount(PRISM_IN(GpuSceneHeader) h) {
     return h.counts.y;
 }
 PRISM_INLINE uint headerLightCount(PRISM_IN(GpuSceneHeader) h) {
     return h.counts.w;
+}
+
+// An adaptive-grid cell's box in voxels: 16 bits a coordinate (accel/grid.h, packCellBox).
+PRISM_INLINE ivec3 cellBoxMin(PRISM_IN(uvec4) box) {
+    return ivec3(int(box.x & 0xFFFFu), int(box.x >> 16u), int(box.y & 0xFFFFu));
+}
+PRISM_INLINE ivec3 cellBoxMax(PRISM_IN(uvec4) box) {
+    return ivec3(int(box.y >> 16u), int(box.z & 0xFFFFu), int(box.z >> 16u));
+}
+// A voxel-map entry: a split into 2^split parts per axis (0: a leaf) and what it points at.
+PRISM_INLINE uint entrySplit(uint entry) {
+    return entry & 15u;
+}
+PRISM_INLINE uint entryTarget(uint entry) { // first child entry, or the leaf's cell
+    return entry >> 4u;
 }
 
 struct GpuSphere {
@@ -175,7 +192,8 @@ PRISM_NAMESPACE_END
 #ifdef __cplusplus
 #include <cstddef>
 namespace prism::gpu {
-static_assert(sizeof(GpuSceneHeader) == 128);
+static_assert(sizeof(GpuSceneHeader) == 160);
+static_assert(offsetof(GpuSceneHeader, voxels) == 144);
 static_assert(offsetof(GpuSceneHeader, gridRes) == 48);
 static_assert(offsetof(GpuSceneHeader, idEnd) == 80);
 static_assert(offsetof(GpuSceneHeader, ambient) == 112);

@@ -32,7 +32,11 @@ PRISM_CONST(uint, kBindingSphereTexels, 16u);          // rgba32f, 2 per GpuSphe
 PRISM_CONST(uint, kBindingTriangleTexels, 17u);        // rgba32f, 3 per GpuTriangle
 PRISM_CONST(uint, kBindingImageTexels, 18u);           // rgba32f, the texture texels
 PRISM_CONST(uint, kBindingTriangleShadingTexels, 19u); // rgba32f, 5 per GpuTriangleShading
-PRISM_CONST(uint, kTraceBindingCount, 20u);
+PRISM_CONST(uint, kBindingGridEntries, 20u);           // adaptive grid: the voxel map
+PRISM_CONST(uint, kBindingCellBoxes, 21u);             // adaptive grid: each cell's box in voxels
+PRISM_CONST(uint, kBindingGridEntryTexels, 22u);       // r32ui
+PRISM_CONST(uint, kBindingCellBoxTexels, 23u);         // rgba32ui
+PRISM_CONST(uint, kTraceBindingCount, 24u);
 
 // Specialization constants: features a scene does not use are compiled out.
 PRISM_CONST(uint, kSpecKinds, 0u); // bit k: the scene has primitives of kind k
@@ -46,6 +50,7 @@ PRISM_CONST(uint, kSpecWriteAov, 7u);
 PRISM_CONST(uint, kSpecLoopBudget, 8u); // loop iterations per invocation, 0: unlimited
 PRISM_CONST(uint, kSpecStackSize, 9u);  // 2 * maxDepth - 1
 PRISM_CONST(uint, kSpecTexelBuffers, 10u);
+PRISM_CONST(uint, kSpecAdaptiveGrid, 11u); // walk the adaptive grid's cells, not a regular DDA
 
 PRISM_NAMESPACE_END
 

@@ -115,36 +115,15 @@ TEST(GridBuilder, CellsListExactlyTheOverlappingPrimitives) {
     Scene scene = test::randomSpheresAndTriangles(5, 150, 300);
     Grid g = buildGrid(scene, parseGridOption("12x9x10"));
     expectWellFormed(g);
-    PrimitiveIds ids(scene);
     for (int z = 0; z < g.resolution.z; ++z)
         for (int y = 0; y < g.resolution.y; ++y)
             for (int x = 0; x < g.resolution.x; ++x) {
                 glm::dvec3 lo =
                     glm::dvec3(g.boundsMin) + glm::dvec3(x, y, z) * glm::dvec3(g.cellSize);
-                glm::dvec3 hi = lo + glm::dvec3(g.cellSize);
-                glm::dvec3 wide = 0.01 * glm::dvec3(g.cellSize);
-                std::vector<uint32_t> listed = primitivesOf(g, {x, y, z});
-                for (uint32_t id = 0; id < ids.count(); ++id) {
-                    bool exact, loose;
-                    PrimitiveIds::Decoded primitive = ids.decode(id);
-                    if (primitive.kind == gpu::kKindSphere) {
-                        const Sphere &s = scene.spheres[primitive.index];
-                        exact = sphereOverlapsBox(s.center, s.radius, lo, hi);
-                        loose = sphereOverlapsBox(s.center, s.radius, lo - wide, hi + wide);
-                    } else {
-                        const Triangle &t = scene.triangles[primitive.index];
-                        exact = triangleOverlapsBox(t.p[0], t.p[1], t.p[2], lo, hi);
-                        loose = triangleOverlapsBox(t.p[0], t.p[1], t.p[2], lo - wide, hi + wide);
-                    }
-                    bool isListed = std::find(listed.begin(), listed.end(), id) != listed.end();
-                    if (exact) {
-                        ASSERT_TRUE(isListed) << "primitive " << id << " missing from cell";
-                    }
-                    if (isListed) {
-                        ASSERT_TRUE(loose) << "primitive " << id << " listed far from cell";
-                    }
-                }
-                EXPECT_TRUE(std::is_sorted(listed.begin(), listed.end()));
+                test::expectCellListsExactly(scene, lo, lo + glm::dvec3(g.cellSize),
+                                             primitivesOf(g, {x, y, z}));
+                if (HasFatalFailure())
+                    return;
             }
 }
 

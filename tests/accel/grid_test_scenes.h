@@ -1,7 +1,14 @@
 #pragma once
 // Random scenes of spheres and triangles for the grid tests.
+#include <algorithm>
+#include <array>
 #include <random>
+#include <vector>
 
+#include <gtest/gtest.h>
+
+#include "accel/overlap_tests.h"
+#include "scene/primitive_ids.h"
 #include "scene/scene.h"
 
 namespace prism::test {
@@ -27,6 +34,58 @@ inline Scene randomSpheresAndTriangles(unsigned seed, int spheres, int triangles
         scene.triangles.push_back(t);
     }
     return scene;
+}
+
+// A small dense cluster in a large, sparse room: the case one regular grid handles badly (the
+// room sets the cell size, the cluster falls into a few cells). Room walls are a few huge
+// triangles, the cluster hundreds of tiny ones and spheres, `clusterSize` across, at the centre.
+inline Scene clusterInARoom(unsigned seed, int clusterTriangles, int clusterSpheres,
+                            double roomSize = 1000.0, double clusterSize = 2.0) {
+    Scene scene =
+        randomSpheresAndTriangles(seed, clusterSpheres, clusterTriangles, clusterSize / 2.0);
+    float r = float(roomSize / 2.0);
+    glm::vec3 c[8];
+    for (int i = 0; i < 8; ++i)
+        c[i] = glm::vec3(i & 1 ? r : -r, i & 2 ? r : -r, i & 4 ? r : -r);
+    int faces[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                       {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+    for (auto &f : faces)
+        for (auto [a, b, d] : {std::array{f[0], f[1], f[2]}, std::array{f[0], f[2], f[3]}}) {
+            Triangle t;
+            t.p[0] = c[a];
+            t.p[1] = c[b];
+            t.p[2] = c[d];
+            scene.triangles.push_back(t);
+        }
+    return scene;
+}
+
+// Checks one cell's list against its box: every primitive that overlaps the box is listed, and
+// a listed one overlaps the box grown by 1% (the binner's slack is far smaller).
+inline void expectCellListsExactly(const Scene &scene, const glm::dvec3 &lo, const glm::dvec3 &hi,
+                                   const std::vector<uint32_t> &listed) {
+    PrimitiveIds ids(scene);
+    glm::dvec3 wide = 0.01 * (hi - lo);
+    auto overlaps = [&](uint32_t id, glm::dvec3 a, glm::dvec3 b) {
+        PrimitiveIds::Decoded p = ids.decode(id);
+        if (p.kind == gpu::kKindSphere) {
+            const Sphere &s = scene.spheres[p.index];
+            return sphereOverlapsBox(s.center, s.radius, a, b);
+        }
+        const Triangle &t = scene.triangles[p.index];
+        return triangleOverlapsBox(t.p[0], t.p[1], t.p[2], a, b);
+    };
+    EXPECT_TRUE(std::is_sorted(listed.begin(), listed.end()));
+    for (uint32_t id = 0; id < ids.count(); ++id) {
+        bool isListed = std::find(listed.begin(), listed.end(), id) != listed.end();
+        if (overlaps(id, lo, hi)) {
+            ASSERT_TRUE(isListed) << "primitive " << id << " missing from its cell";
+        }
+        if (isListed) {
+            ASSERT_TRUE(overlaps(id, lo - wide, hi + wide))
+                << "primitive " << id << " listed far from its cell";
+        }
+    }
 }
 
 } // namespace prism::test

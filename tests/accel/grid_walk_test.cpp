@@ -80,9 +80,9 @@ glm::dvec3 randomDirection(std::mt19937 &rng) {
     return glm::normalize(d);
 }
 
-void checkRays(const Scene &scene, const Grid &g, unsigned seed, int rays) {
+void checkRays(const Scene &scene, const Grid &g, unsigned seed, int rays, double span = 14.0) {
     std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> coord(-14.0, 14.0);
+    std::uniform_real_distribution<double> coord(-span, span);
     int crossingsChecked = 0;
     for (int r = 0; r < rays; ++r) {
         glm::dvec3 o(coord(rng), coord(rng), coord(rng)), d = randomDirection(rng);
@@ -152,6 +152,51 @@ TEST(GridWalk, StartsInsideTheGridAtTheOriginsCell) {
     ASSERT_EQ(cells.size(), 5u); // from the middle to the +x face of a 10-cell row
     EXPECT_EQ(cells.front().cell, g.cellIndex({5, 5, 5}));
     EXPECT_EQ(cells.front().tEnter, 0.0);
+}
+
+TEST(AdaptiveGridWalk, FindsEveryCrossingOnRandomRays) {
+    Scene scene = test::randomSpheresAndTriangles(31, 200, 400);
+    Grid g = buildGrid(scene, parseGridOption("adaptive"));
+    ASSERT_TRUE(g.adaptive());
+    checkRays(scene, g, 4, 3000);
+}
+
+// Rays from inside the cluster, inside the room and outside it; the cluster is 500 times
+// smaller than the room, so its cells are several levels down.
+TEST(AdaptiveGridWalk, FindsEveryCrossingInAClusterInARoom) {
+    Scene scene = test::clusterInARoom(32, 600, 100);
+    Grid g = buildGrid(scene, parseGridOption("adaptive"));
+    EXPECT_GE(g.depth, 2u) << "the cluster is split below the top grid";
+    checkRays(scene, g, 5, 1500, 1.5);   // from within the cluster
+    checkRays(scene, g, 6, 1500, 700.0); // from anywhere in and around the room
+}
+
+// Axis-parallel rays that run exactly along voxel faces and start on them.
+TEST(AdaptiveGridWalk, FindsEveryCrossingAlongCellFaces) {
+    Scene scene = test::clusterInARoom(33, 300, 50);
+    Grid g = buildGrid(scene, parseGridOption("adaptive"));
+    glm::dvec3 lo(g.boundsMin), voxel(g.voxelSize());
+    std::mt19937 rng(7);
+    glm::ivec3 res = g.voxelResolution();
+    int crossings = 0;
+    for (int r = 0; r < 600; ++r) {
+        glm::ivec3 v(int(rng() % uint32_t(res.x)), int(rng() % uint32_t(res.y)),
+                     int(rng() % uint32_t(res.z)));
+        glm::dvec3 o = lo + glm::dvec3(v) * voxel; // a voxel corner: on three faces
+        glm::dvec3 d(0.0);
+        d[r % 3] = (r / 3) % 2 ? 1.0 : -1.0;
+        std::vector<Visited> cells = walk(g, o, d);
+        for (const Crossing &c : allCrossings(scene, o, d)) {
+            double tol = 1e-7 * (1.0 + c.t);
+            bool found = false;
+            for (const Visited &visited : cells)
+                found = found || (c.t >= visited.tEnter - tol && c.t <= visited.tExit + tol &&
+                                  listed(g, visited.cell, c.id));
+            ASSERT_TRUE(found) << "ray " << r << ": primitive " << c.id << " at t=" << c.t;
+            ++crossings;
+        }
+    }
+    EXPECT_GT(crossings, 10);
 }
 
 TEST(GridWalk, MissingRayVisitsNothing) {

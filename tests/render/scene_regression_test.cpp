@@ -15,6 +15,7 @@
 #include "image_compare.h"
 #include "render_helpers.h"
 #include "scene/scene_loader.h"
+#include "shipped_scenes.h"
 
 namespace prism::test {
 namespace {
@@ -22,15 +23,6 @@ namespace {
 constexpr double kPixelThreshold = 0.02;
 constexpr double kMaxDifferingFraction = 0.01;
 constexpr double kMaxMeanAbsolute = 0.002;
-
-std::vector<std::string> shippedScenes() {
-    std::vector<std::string> names;
-    for (const auto &entry : std::filesystem::directory_iterator(PRISM_SCENES_DIR))
-        if (entry.path().extension() == ".scene")
-            names.push_back(entry.path().stem().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 class SceneRegression : public GpuTest, public ::testing::WithParamInterface<std::string> {};
 

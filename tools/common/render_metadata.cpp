@@ -6,6 +6,13 @@ std::string resolutionText(const glm::ivec3 &r) {
     return std::to_string(r.x) + "x" + std::to_string(r.y) + "x" + std::to_string(r.z);
 }
 
+std::string gridText(const Grid &grid) {
+    if (!grid.adaptive())
+        return resolutionText(grid.resolution);
+    return "adaptive " + resolutionText(grid.resolution) + " top, " +
+           std::to_string(grid.cellCount()) + " cells, depth " + std::to_string(grid.depth);
+}
+
 ImageMetadata renderMetadata(const RenderRecord &r) {
     ImageMetadata meta;
     meta.strings = {{"prism:commandLine", r.commandLine},

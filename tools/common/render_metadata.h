@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include "accel/grid.h"
 #include "core/ray_counts.h"
 #include "io/image_metadata.h"
 
@@ -16,7 +17,7 @@ struct RenderRecord {
     std::string scenePath;
     std::string device;
     std::string backend;        // "vulkan" or "cpu"
-    std::string gridResolution; // resolutionText(grid.resolution), or why there is none
+    std::string gridResolution; // gridText(grid), or why there is none
     RayCounts rays;             // of one frame
     double renderTimeMs = 0.0;  // best frame
     double renderTimeMedianMs = 0.0;
@@ -30,5 +31,8 @@ ImageMetadata renderMetadata(const RenderRecord &record);
 
 // "48x12x40"
 std::string resolutionText(const glm::ivec3 &resolution);
+
+// A regular grid's resolution, or "adaptive 13x5x13 top, 81234 cells, depth 3".
+std::string gridText(const Grid &grid);
 
 } // namespace prism

@@ -13,7 +13,7 @@ BenchVariant parseBenchVariant(const std::string &text) {
     std::stringstream tokens(text);
     std::string token;
     while (std::getline(tokens, token, '+')) {
-        if (token == "auto" || token == "off") {
+        if (token == "auto" || token == "off" || token == "adaptive") {
             v.grid.mode = parseGridOption(token).mode;
         } else if (token.rfind("grid=", 0) == 0) {
             float density = v.grid.density;
@@ -38,7 +38,7 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.tracer.loopBudget = 60000;
         } else {
             throw Error("variant " + text + ": unknown part '" + token +
-                        "' (use auto, off, grid=N|NxNyNz, density=L, no-reflection, "
+                        "' (use auto, off, adaptive, grid=N|NxNyNz, density=L, no-reflection, "
                         "no-refraction, no-shadows, texel, storage, count-loops; join with +)");
         }
     }

@@ -85,7 +85,7 @@ int main(int argc, char **argv) {
         ->default_val(5);
     app.add_option(
            "--variants", variantList,
-           "Comma-separated variants: auto, off, grid=N|NxNyNz, density=L, "
+           "Comma-separated variants: auto, off, adaptive, grid=N|NxNyNz, density=L, "
            "no-reflection, no-refraction, no-shadows, texel or storage (how the hot arrays are "
            "read), count-loops; "
            "join parts with +")

@@ -55,8 +55,8 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
         ->check(CLI::Range(1u, 16u))
         ->default_val(5);
     app.add_option("--grid", options.gridText,
-                   "Grid resolution: auto (sized to the scene), off (test every primitive), N "
-                   "(N^3 cells) or NxNyNz")
+                   "Grid: auto (regular, sized to the scene), adaptive (experimental: cells that "
+                   "follow the geometry), off (test every primitive), N (N^3 cells) or NxNyNz")
         ->default_val("auto");
     float density = GridOptions{}.density;
     app.add_option("--grid-density", density,

@@ -136,8 +136,8 @@ void runRender(const RenderOptions &o) {
     record.scenePath = o.scenePath.string();
     record.device = out.device;
     record.backend = o.backend == Backend::Cpu ? "cpu" : "vulkan";
-    record.gridResolution = o.backend == Backend::Cpu ? std::string("none (brute force)")
-                                                      : resolutionText(grid.resolution);
+    record.gridResolution =
+        o.backend == Backend::Cpu ? std::string("none (brute force)") : gridText(grid);
     record.rays = out.rays;
     record.renderTimeMs = bestMs;
     record.renderTimeMedianMs = medianMs;
@@ -149,26 +149,31 @@ void runRender(const RenderOptions &o) {
     writeImage(o.outputPath, out.image, meta);
 
     if (o.stats) {
-        nlohmann::json stats = {{"scene", o.scenePath.string()},
-                                {"backend", o.backend == Backend::Cpu ? "cpu" : "vulkan"},
-                                {"device", out.device},
-                                {"width", o.width},
-                                {"height", o.height},
-                                {"spp", o.samplesPerPixel},
-                                {"depth", o.maxDepth},
-                                {"primitives", scene.finitePrimitiveCount() + scene.planes.size()},
-                                {"grid", resolutionText(grid.resolution)},
-                                {"grid_max_per_cell", grid.maxPerCell},
-                                {"load_ms", loadMs},
-                                {"build_ms", buildMs},
-                                {"trace_ms", bestMs},
-                                {"trace_ms_median", medianMs},
-                                {"frames", out.frameMs.size()},
-                                {"rays",
-                                 {{"primary", out.rays.primary},
-                                  {"shadow", out.rays.shadow},
-                                  {"secondary", out.rays.secondary}}},
-                                {"mrays_per_s", mraysPerSecond}};
+        nlohmann::json stats = {
+            {"scene", o.scenePath.string()},
+            {"backend", o.backend == Backend::Cpu ? "cpu" : "vulkan"},
+            {"device", out.device},
+            {"width", o.width},
+            {"height", o.height},
+            {"spp", o.samplesPerPixel},
+            {"depth", o.maxDepth},
+            {"primitives", scene.finitePrimitiveCount() + scene.planes.size()},
+            {"grid", gridText(grid)},
+            {"grid_cells", grid.cellCount()},
+            {"grid_bytes", grid.bytes()},
+            {"grid_mean_per_cell",
+             double(grid.cellPrimitives.size()) / double(std::max<uint64_t>(1, grid.cellCount()))},
+            {"grid_max_per_cell", grid.maxPerCell},
+            {"load_ms", loadMs},
+            {"build_ms", buildMs},
+            {"trace_ms", bestMs},
+            {"trace_ms_median", medianMs},
+            {"frames", out.frameMs.size()},
+            {"rays",
+             {{"primary", out.rays.primary},
+              {"shadow", out.rays.shadow},
+              {"secondary", out.rays.secondary}}},
+            {"mrays_per_s", mraysPerSecond}};
         std::printf("%s\n", stats.dump().c_str());
     }
 }

@@ -30,7 +30,7 @@ bool parseViewOptions(int argc, char **argv, ViewOptions &options, ViewScript &s
         ->check(CLI::Range(1u, 16u))
         ->default_val(5);
     app.add_option("--grid", grid,
-                   "Grid resolution: auto, off (test every primitive), N (N^3 cells) or NxNyNz")
+                   "Grid: auto, adaptive, off (test every primitive), N (N^3 cells) or NxNyNz")
         ->default_val("auto");
     float density = GridOptions{}.density;
     app.add_option("--grid-density", density,

@@ -334,7 +334,7 @@ void Viewer::saveScreenshot(const std::filesystem::path &base) {
     record.scenePath = options_.scenePath.string();
     record.device = context_->deviceName();
     record.backend = "vulkan";
-    record.gridResolution = resolutionText(grid_.resolution);
+    record.gridResolution = gridText(grid_);
     record.rays = accumulation.rays;
     record.renderTimeMs = accumulationMs_;
     record.renderTimeMedianMs = accumulationMs_;
@@ -361,7 +361,7 @@ OverlayStats Viewer::overlayStats() const {
     s.mraysPerSecond = stats_.mraysPerSecond(); // like FPS, the last rate while tracing
     s.samples = samples_;
     s.samplesTarget = options_.samplesPerPixel;
-    s.grid = toggles_.grid ? resolutionText(grid_.resolution) : "off (1 cell)";
+    s.grid = toggles_.grid ? gridText(grid_) : "off (1 cell)";
     s.device = context_->deviceName();
     s.presentMode = vk::presentModeName(swapchain_->presentMode());
     s.width = tracer_->width();
@@ -475,7 +475,7 @@ int Viewer::run() {
         report.scene = options_.scenePath.string();
         report.device = context_->deviceName();
         report.presentMode = vk::presentModeName(swapchain_->presentMode());
-        report.grid = resolutionText(grid_.resolution);
+        report.grid = gridText(grid_);
         report.width = tracer_->width();
         report.height = tracer_->height();
         report.depth = options_.maxDepth;

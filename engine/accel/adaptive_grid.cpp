@@ -1,0 +1,207 @@
+#include "accel/adaptive_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "accel/cell_binner.h"
+#include "accel/cell_expansion.h"
+#include "core/error.h"
+#include "shared/gpu_types.h"
+
+namespace prism {
+namespace {
+
+constexpr uint32_t kMaxIndex = 1u << 28; // entries keep 4 bits for the split
+// What a step to the next cell costs against one primitive test, for the split decision.
+constexpr double kStepCost = 1.0;
+
+// Voxels per top cell and axis: as fine as 16-bit voxel coordinates allow, at most what the
+// levels can split.
+uint32_t chooseShift(const glm::ivec3 &topResolution) {
+    int largest = std::max({topResolution.x, topResolution.y, topResolution.z});
+    uint32_t shift = 0;
+    while (shift < kAdaptiveMaxDepth * kAdaptiveMaxSplit && (largest << (shift + 1)) <= 65535)
+        ++shift;
+    return shift;
+}
+
+class Splitter {
+public:
+    Splitter(Grid &grid, const FinitePrimitives &primitives, double density, double magnitude)
+        : grid_(grid), primitives_(primitives), density_(density), magnitude_(magnitude),
+          voxelSize_(glm::dvec3(grid.voxelSize())) {}
+
+    // Makes entry `entry` the cell, or the tree of cells, of the box of 2^sizeShift voxels per
+    // axis from voxelMin, which `refs` overlap.
+    // `idleSplits`: how many splits above in a row left some part with all their primitives.
+    void build(uint32_t entry, glm::ivec3 voxelMin, uint32_t sizeShift, uint32_t level,
+               uint32_t idleSplits, std::vector<uint32_t> refs) {
+        uint32_t n = uint32_t(refs.size());
+        uint32_t split = chooseSplit(n, sizeShift, level);
+        if (split == 0) {
+            makeLeaf(entry, voxelMin, voxelMin + glm::ivec3(1 << sizeShift), refs);
+            return;
+        }
+        // Surface area heuristic (MacDonald & Booth 1990) for a uniform split: a ray through
+        // this cell tests its n primitives; split, it steps through about 1.5 parts per axis
+        // and meets each part with probability area(part) / area(cell) = 1 / parts^2. Where
+        // primitives are large against the parts (overlapping spheres) a split only copies
+        // references. The split the density asks for and each coarser one are priced; the
+        // cheapest is made if it beats not splitting.
+        Split best;
+        double bestCost = double(n);
+        for (uint32_t d = split; d >= 1; --d) {
+            Split candidate = splitInto(refs, voxelMin, sizeShift, d);
+            double parts = double(1u << d);
+            double cost = kStepCost * 1.5 * parts + double(candidate.references) / (parts * parts);
+            if (cost < bestCost) {
+                bestCost = cost;
+                best = std::move(candidate);
+            }
+        }
+        if (best.split == 0 || budgetSpent()) {
+            makeLeaf(entry, voxelMin, voxelMin + glm::ivec3(1 << sizeShift), refs);
+            return;
+        }
+        split = best.split;
+        uint32_t childShift = sizeShift - split, parts = 1u << split;
+        Lattice &children = best.children;
+        std::vector<std::vector<uint32_t>> &childRefs = best.childRefs;
+        size_t fullest = best.fullest;
+        // A split that leaves some part with every primitive may still help one level down (a
+        // small cluster in a big cell), but two in a row mean the primitives cannot be told
+        // apart (all in one point, a fan around one vertex): the cell stays whole. This also
+        // bounds the work such scenes cost.
+        idleSplits = fullest >= n ? idleSplits + 1 : 0;
+        if (idleSplits >= 2) {
+            makeLeaf(entry, voxelMin, voxelMin + glm::ivec3(1 << sizeShift), refs);
+            return;
+        }
+        refs = {}; // free before going down
+
+        size_t first = grid_.entries.size();
+        if (first + children.count() > kMaxIndex)
+            throw Error("adaptive grid needs more than 2^28 voxel-map entries; use --grid auto");
+        grid_.entries.resize(first + children.count());
+        grid_.entries[entry] = uint32_t(first) << 4 | split;
+        grid_.depth = std::max(grid_.depth, level + 1);
+        for (int z = 0; z < int(parts); ++z)
+            for (int y = 0; y < int(parts); ++y)
+                for (int x = 0; x < int(parts); ++x) {
+                    glm::ivec3 cell = children.lo + glm::ivec3(x, y, z);
+                    uint32_t local = children.local(cell);
+                    build(uint32_t(first) + local, cell << int(childShift), childShift, level + 1,
+                          idleSplits, std::move(childRefs[local]));
+                }
+    }
+
+private:
+    struct Split {
+        uint32_t split = 0; // parts per axis: 2^split; 0: none
+        Lattice children;
+        std::vector<std::vector<uint32_t>> childRefs;
+        size_t references = 0; // over all parts
+        size_t fullest = 0;
+    };
+
+    Split splitInto(const std::vector<uint32_t> &refs, glm::ivec3 voxelMin, uint32_t sizeShift,
+                    uint32_t split) const {
+        Split s;
+        s.split = split;
+        uint32_t childShift = sizeShift - split;
+        s.children.origin = glm::dvec3(grid_.boundsMin);
+        s.children.cellSize = voxelSize_ * double(1u << childShift);
+        s.children.lo = voxelMin >> int(childShift);
+        s.children.hi = s.children.lo + glm::ivec3(1 << split);
+        s.children.magnitude = magnitude_;
+        std::vector<std::pair<uint32_t, uint32_t>> pairs;
+        CellBinner binner(s.children);
+        for (uint32_t id : refs)
+            binner.bin(id, primitives_, pairs);
+        s.childRefs.resize(s.children.count());
+        for (const auto &[child, id] : pairs) {
+            s.childRefs[child].push_back(id);
+            s.fullest = std::max(s.fullest, s.childRefs[child].size());
+        }
+        s.references = pairs.size();
+        return s;
+    }
+
+    // Cells and entries at most ~64 per primitive (and a floor for small scenes): a safety net
+    // on memory and build time, far above what the cost model asks for.
+    bool budgetSpent() const { return grid_.entries.size() + grid_.cellBoxes.size() > budget_; }
+
+    // Parts per axis, as a power of two: about density cells per primitive held (a split into
+    // 8^d cells), none for a cell with few primitives or no levels left.
+    uint32_t chooseSplit(uint32_t n, uint32_t sizeShift, uint32_t level) const {
+        if (n <= kAdaptiveLeafPrimitives || sizeShift == 0 || level >= kAdaptiveMaxDepth)
+            return 0;
+        double d = std::round(std::log2(std::cbrt(density_ * double(n))));
+        return uint32_t(std::clamp(d, 1.0, double(std::min(kAdaptiveMaxSplit, sizeShift))));
+    }
+
+    void makeLeaf(uint32_t entry, glm::ivec3 min, glm::ivec3 max,
+                  const std::vector<uint32_t> &refs) {
+        size_t cell = grid_.cellBoxes.size();
+        if (cell >= kMaxIndex)
+            throw Error("adaptive grid needs more than 2^28 cells; use --grid auto");
+        if (grid_.cellPrimitives.size() + refs.size() >= uint64_t(UINT32_MAX))
+            throw Error("grid holds more than 2^32 primitive references; use --grid auto");
+        grid_.entries[entry] = uint32_t(cell) << 4;
+        grid_.cellBoxes.push_back(packCellBox(min, max));
+        grid_.cellPrimitives.insert(grid_.cellPrimitives.end(), refs.begin(), refs.end());
+        grid_.cellStart.push_back(uint32_t(grid_.cellPrimitives.size()));
+        grid_.maxPerCell = std::max(grid_.maxPerCell, uint32_t(refs.size()));
+    }
+
+    Grid &grid_;
+    const FinitePrimitives &primitives_;
+    double density_;
+    double magnitude_;
+    glm::dvec3 voxelSize_;
+    size_t budget_ = 64 * size_t(primitives_.count()) + (size_t(1) << 20);
+};
+
+} // namespace
+
+void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives,
+                        const GridOptions &options) {
+    grid.shift = chooseShift(grid.resolution);
+    Lattice top = wholeGrid(grid);
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    CellBinner binner(top);
+    for (uint32_t id = 0; id < primitives.count(); ++id)
+        binner.bin(id, primitives, pairs);
+    std::vector<std::vector<uint32_t>> topRefs(top.count());
+    for (const auto &[cell, id] : pairs)
+        topRefs[cell].push_back(id); // ids ascending within a cell: binned in id order
+    pairs = {};
+
+    grid.entries.assign(top.count(), 0u);
+    grid.cellStart = {0u};
+    grid.depth = 0;
+    Splitter splitter(grid, primitives, double(options.density), top.magnitude);
+    for (int z = 0; z < grid.resolution.z; ++z)
+        for (int y = 0; y < grid.resolution.y; ++y)
+            for (int x = 0; x < grid.resolution.x; ++x) {
+                uint32_t t = grid.cellIndex({x, y, z});
+                splitter.build(t, glm::ivec3(x, y, z) << int(grid.shift), grid.shift, 0, 0,
+                               std::move(topRefs[t]));
+            }
+    expandCells(grid);
+}
+
+glm::uvec4 packCellBox(glm::ivec3 min, glm::ivec3 max) {
+    auto pack = [](int lo, int hi) { return uint32_t(lo) | uint32_t(hi) << 16; };
+    return {pack(min.x, min.y), pack(min.z, max.x), pack(max.y, max.z), 0u};
+}
+
+void unpackCellBox(const glm::uvec4 &packed, glm::ivec3 &min, glm::ivec3 &max) {
+    min = gpu::cellBoxMin(packed); // the tracer's own reading (shared/gpu_types.h)
+    max = gpu::cellBoxMax(packed);
+}
+
+} // namespace prism

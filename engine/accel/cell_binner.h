@@ -1,0 +1,70 @@
+#pragma once
+// Putting primitives into the cells of a lattice they overlap, exactly (each kind's own overlap
+// test) and with a thin slack so that the shader's float walk never misses one.
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "accel/bounds.h"
+#include "accel/finite_primitives.h"
+#include "accel/grid.h"
+
+namespace prism {
+
+// Cells of size cellSize from origin; binning looks at the window [lo, hi) of them, whose cells
+// are numbered x fastest from 0.
+struct Lattice {
+    glm::dvec3 origin{0.0};
+    glm::dvec3 cellSize{1.0};
+    glm::ivec3 lo{0}, hi{1};
+    double magnitude = 0.0; // largest |coordinate| of the whole grid: the scale of float error
+
+    glm::ivec3 size() const { return hi - lo; }
+    uint32_t count() const { return uint32_t(size().x * size().y * size().z); }
+    uint32_t local(glm::ivec3 cell) const {
+        glm::ivec3 c = cell - lo, s = size();
+        return uint32_t(c.x + s.x * (c.y + s.y * c.z));
+    }
+};
+
+// The whole grid's cells (the top cells of an adaptive grid).
+Lattice wholeGrid(const Grid &grid);
+
+class CellBinner {
+public:
+    explicit CellBinner(const Lattice &lattice) : lattice_(lattice) {
+        // Cells are widened a little so a hit found by the shader's float walk near a cell face
+        // is listed in the cell on either side of it (rounding may put the walk in either).
+        slack_ = 1e-4 * lattice.cellSize + glm::dvec3(4e-7 * lattice.magnitude);
+    }
+
+    // Appends (local cell, id) for every cell of the window that primitive `id` overlaps.
+    void bin(uint32_t id, const FinitePrimitives &primitives,
+             std::vector<std::pair<uint32_t, uint32_t>> &pairs) const {
+        Aabb bounds = primitives.bounds(id);
+        glm::ivec3 lo = cellOf(bounds.min - slack_), hi = cellOf(bounds.max + slack_);
+        for (int z = lo.z; z <= hi.z; ++z)
+            for (int y = lo.y; y <= hi.y; ++y)
+                for (int x = lo.x; x <= hi.x; ++x) {
+                    glm::dvec3 cmin = lattice_.origin + glm::dvec3(x, y, z) * lattice_.cellSize;
+                    glm::dvec3 cmax = cmin + lattice_.cellSize;
+                    if (primitives.overlapsBox(id, cmin - slack_, cmax + slack_))
+                        pairs.emplace_back(lattice_.local({x, y, z}), id);
+                }
+    }
+
+private:
+    glm::ivec3 cellOf(const glm::dvec3 &p) const {
+        glm::dvec3 f = glm::floor((p - lattice_.origin) / lattice_.cellSize);
+        return glm::clamp(glm::ivec3(glm::clamp(f, glm::dvec3(-1e9), glm::dvec3(1e9))), lattice_.lo,
+                          lattice_.hi - 1);
+    }
+
+    Lattice lattice_;
+    glm::dvec3 slack_;
+};
+
+} // namespace prism

@@ -1,0 +1,115 @@
+#include "accel/cell_expansion.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace prism {
+namespace {
+
+// Calls visit(cell) for every cell of the voxel map that overlaps the voxel box [lo, hi).
+template <typename Visit> class MapQuery {
+public:
+    MapQuery(const Grid &grid, glm::ivec3 lo, glm::ivec3 hi, Visit &visit)
+        : grid_(grid), lo_(lo), hi_(hi), visit_(visit) {}
+
+    void run() {
+        int shift = int(grid_.shift);
+        glm::ivec3 first = lo_ >> shift, last = (hi_ - 1) >> shift;
+        for (int z = first.z; z <= last.z; ++z)
+            for (int y = first.y; y <= last.y; ++y)
+                for (int x = first.x; x <= last.x; ++x) {
+                    glm::ivec3 top(x, y, z);
+                    descend(grid_.entries[grid_.cellIndex(top)], top << shift, shift);
+                }
+    }
+
+private:
+    void descend(uint32_t entry, glm::ivec3 nodeMin, int nodeShift) {
+        int split = int(entry & 15u);
+        if (split == 0) {
+            visit_(entry >> 4);
+            return;
+        }
+        int childShift = nodeShift - split, parts = 1 << split;
+        glm::ivec3 first = glm::max(lo_ - nodeMin, glm::ivec3(0)) >> childShift;
+        glm::ivec3 last = glm::min((hi_ - 1 - nodeMin) >> childShift, glm::ivec3(parts - 1));
+        for (int z = first.z; z <= last.z; ++z)
+            for (int y = first.y; y <= last.y; ++y)
+                for (int x = first.x; x <= last.x; ++x) {
+                    uint32_t child = (entry >> 4) + uint32_t(x + (y << split) + (z << (2 * split)));
+                    descend(grid_.entries[child], nodeMin + (glm::ivec3(x, y, z) << childShift),
+                            childShift);
+                }
+    }
+
+    const Grid &grid_;
+    glm::ivec3 lo_, hi_;
+    Visit &visit_;
+};
+
+template <typename Visit>
+void forEachCellIn(const Grid &grid, glm::ivec3 lo, glm::ivec3 hi, Visit visit) {
+    MapQuery<Visit>(grid, lo, hi, visit).run();
+}
+
+} // namespace
+
+void expandCells(Grid &grid) {
+    glm::ivec3 resolution = grid.voxelResolution();
+    std::vector<glm::uvec4> grown = grid.cellBoxes;
+    auto refs = [&](uint32_t cell) {
+        return std::make_pair(grid.cellPrimitives.begin() + grid.cellStart[cell],
+                              grid.cellPrimitives.begin() + grid.cellStart[cell + 1]);
+    };
+    for (uint32_t cell = 0; cell < grid.cellBoxes.size(); ++cell) {
+        glm::ivec3 lo, hi;
+        unpackCellBox(grown[cell], lo, hi);
+        auto [first, last] = refs(cell);
+        for (int round = 0; round < kExpansionRounds; ++round) {
+            bool grew = false;
+            for (int face = 0; face < 6; ++face) {
+                int axis = face / 2;
+                bool up = face % 2 == 0;
+                if (up ? hi[axis] >= resolution[axis] : lo[axis] <= 0)
+                    continue;
+                // The one-voxel layer just past the face: the cells it touches must each be
+                // listed in full here; the layer grows to the thinnest of them.
+                glm::ivec3 layerLo = lo, layerHi = hi;
+                if (up) {
+                    layerLo[axis] = hi[axis];
+                    layerHi[axis] = hi[axis] + 1;
+                } else {
+                    layerLo[axis] = lo[axis] - 1;
+                    layerHi[axis] = lo[axis];
+                }
+                bool allowed = true;
+                int step = resolution[axis];
+                forEachCellIn(grid, layerLo, layerHi, [&](uint32_t neighbour) {
+                    if (!allowed)
+                        return;
+                    auto [nFirst, nLast] = refs(neighbour);
+                    if (!std::includes(first, last, nFirst, nLast)) {
+                        allowed = false;
+                        return;
+                    }
+                    glm::ivec3 nLo, nHi;
+                    unpackCellBox(grid.cellBoxes[neighbour], nLo, nHi);
+                    step = std::min(step, up ? nHi[axis] - hi[axis] : lo[axis] - nLo[axis]);
+                });
+                if (!allowed || step <= 0)
+                    continue;
+                if (up)
+                    hi[axis] += step;
+                else
+                    lo[axis] -= step;
+                grew = true;
+            }
+            if (!grew)
+                break;
+        }
+        grown[cell] = packCellBox(lo, hi);
+    }
+    grid.cellBoxes = std::move(grown);
+}
+
+} // namespace prism

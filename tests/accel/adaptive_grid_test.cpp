@@ -1,0 +1,163 @@
+// The adaptive grid's structure: its cells tile the grid's box, the voxel map finds the cell
+// that holds a voxel, each cell lists exactly the primitives overlapping its box, and it adapts
+// to uneven scenes. (Walks against brute force: grid_walk_test.cpp.)
+#include <algorithm>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "accel/adaptive_grid.h"
+#include "accel/grid.h"
+#include "accel/grid_walk.h"
+#include "grid_test_scenes.h"
+
+namespace prism {
+namespace {
+
+Grid adaptive(const Scene &scene) {
+    return buildGrid(scene, parseGridOption("adaptive"));
+}
+
+void expectWellFormed(const Grid &g) {
+    ASSERT_TRUE(g.adaptive());
+    ASSERT_EQ(g.cellStart.size(), g.cellBoxes.size() + 1);
+    EXPECT_EQ(g.cellStart.front(), 0u);
+    EXPECT_EQ(g.cellStart.back(), g.cellPrimitives.size());
+    EXPECT_TRUE(std::is_sorted(g.cellStart.begin(), g.cellStart.end()));
+    // Every box lies inside the virtual grid. (Expanded boxes overlap: the voxel map, not the
+    // boxes, says which cell owns a voxel.)
+    glm::ivec3 res = g.voxelResolution();
+    for (const glm::uvec4 &packed : g.cellBoxes) {
+        glm::ivec3 lo, hi;
+        unpackCellBox(packed, lo, hi);
+        ASSERT_TRUE(glm::all(glm::lessThan(lo, hi)));
+        ASSERT_TRUE(glm::all(glm::greaterThanEqual(lo, glm::ivec3(0))));
+        ASSERT_TRUE(glm::all(glm::lessThanEqual(hi, res)));
+    }
+    // The map sends random voxels to the cell whose box holds them.
+    std::mt19937 rng(1);
+    for (int i = 0; i < 2000; ++i) {
+        glm::ivec3 v(int(rng() % uint32_t(res.x)), int(rng() % uint32_t(res.y)),
+                     int(rng() % uint32_t(res.z)));
+        glm::ivec3 lo, hi;
+        unpackCellBox(g.cellBoxes.at(adaptiveCellAt(g, v)), lo, hi);
+        ASSERT_TRUE(glm::all(glm::lessThanEqual(lo, v)) && glm::all(glm::lessThan(v, hi)));
+    }
+}
+
+TEST(AdaptiveGrid, BoxesLieInTheGridAndTheMapFindsThem) {
+    expectWellFormed(adaptive(test::randomSpheresAndTriangles(41, 300, 600)));
+    expectWellFormed(adaptive(test::clusterInARoom(42, 2000, 100)));
+}
+
+// Every primitive is listed in each cell its box overlaps, and only near such cells.
+TEST(AdaptiveGrid, CellsListExactlyTheOverlappingPrimitives) {
+    Scene scene = test::clusterInARoom(43, 400, 60);
+    Grid g = adaptive(scene);
+    glm::dvec3 lo(g.boundsMin), voxel(g.voxelSize());
+    for (uint32_t c = 0; c < g.cellBoxes.size(); ++c) {
+        glm::ivec3 vmin, vmax;
+        unpackCellBox(g.cellBoxes[c], vmin, vmax);
+        std::vector<uint32_t> listed(g.cellPrimitives.begin() + g.cellStart[c],
+                                     g.cellPrimitives.begin() + g.cellStart[c + 1]);
+        test::expectCellListsExactly(scene, lo + glm::dvec3(vmin) * voxel,
+                                     lo + glm::dvec3(vmax) * voxel, listed);
+        if (HasFatalFailure())
+            return;
+    }
+}
+
+// A cluster 500 times smaller than its room still gets cells of its own size: its fullest
+// cell holds a few primitives, where one regular grid of the same budget holds hundreds.
+TEST(AdaptiveGrid, FollowsAClusterInARoom) {
+    Scene scene = test::clusterInARoom(44, 3000, 0);
+    Grid regular = buildGrid(scene);
+    Grid g = adaptive(scene);
+    expectWellFormed(g);
+    EXPECT_GT(regular.maxPerCell, 500u);
+    EXPECT_LT(g.maxPerCell, regular.maxPerCell / 10);
+    EXPECT_LT(g.cellBoxes.size(), 40 * scene.triangles.size()) << "memory stays linear";
+}
+
+// Expanded cells take a ray across empty space in few steps: fewer than the cells the voxel
+// map puts along its path (the walk's count without expansion).
+TEST(AdaptiveGrid, ExpandedCellsCrossEmptySpaceInFewSteps) {
+    Scene scene = test::clusterInARoom(47, 1000, 0);
+    Grid g = adaptive(scene);
+    glm::dvec3 origin(-450.0, 200.0, -300.0), dir(1.0, 0.0, 0.0);
+    double length = 900.0;
+    int visited = 0;
+    walkGrid(g, origin, dir, length, [&](uint32_t, double, double) { return ++visited, true; });
+    int mapCells = 0;
+    uint32_t previous = ~0u;
+    glm::dvec3 lo(g.boundsMin), voxel(g.voxelSize());
+    for (int i = 0; i <= 100000; ++i) {
+        glm::dvec3 p = origin + (length * i / 100000.0) * dir;
+        uint32_t cell = adaptiveCellAt(g, glm::ivec3(glm::floor((p - lo) / voxel)));
+        mapCells += cell != previous;
+        previous = cell;
+    }
+    EXPECT_GT(visited, 0);
+    EXPECT_LT(visited, mapCells);
+}
+
+TEST(AdaptiveGrid, BuildIsDeterministic) {
+    Scene scene = test::clusterInARoom(45, 800, 80);
+    Grid a = adaptive(scene), b = adaptive(scene);
+    EXPECT_EQ(a.entries, b.entries);
+    EXPECT_EQ(a.cellBoxes, b.cellBoxes);
+    EXPECT_EQ(a.cellStart, b.cellStart);
+    EXPECT_EQ(a.cellPrimitives, b.cellPrimitives);
+}
+
+TEST(AdaptiveGrid, EmptySingleAndDegenerateScenes) {
+    Scene empty;
+    Grid g = adaptive(empty);
+    expectWellFormed(g);
+    EXPECT_TRUE(g.cellPrimitives.empty());
+
+    Scene one;
+    one.spheres.push_back(Sphere{{1, 2, 3}, 0.5f, 0});
+    g = adaptive(one);
+    expectWellFormed(g);
+    EXPECT_EQ(g.maxPerCell, 1u);
+
+    // Every primitive in one point, and degenerate triangles (a point, a segment): splitting
+    // cannot separate them, so the levels run out and the build still ends.
+    Scene point;
+    for (int i = 0; i < 50; ++i) {
+        point.spheres.push_back(Sphere{{0, 0, 0}, 1e-3f, 0});
+        Triangle t;
+        t.p[0] = t.p[1] = t.p[2] = glm::vec3(0.0f);
+        if (i % 2)
+            t.p[2] = glm::vec3(1e-3f, 0.0f, 0.0f);
+        point.triangles.push_back(t);
+    }
+    g = adaptive(point);
+    expectWellFormed(g);
+    EXPECT_LE(g.depth, kAdaptiveMaxDepth);
+    EXPECT_EQ(g.maxPerCell, 100u);
+}
+
+// Huge and tiny scales behave alike: the structure depends on the shape, not the units.
+TEST(AdaptiveGrid, SameCellsAtAnyScale) {
+    Scene scene = test::clusterInARoom(46, 300, 30, 100.0, 2.0);
+    Grid reference = adaptive(scene);
+    for (float scale : {1e-3f, 1e3f}) {
+        Scene scaled = scene;
+        for (Sphere &s : scaled.spheres) {
+            s.center *= scale;
+            s.radius *= scale;
+        }
+        for (Triangle &t : scaled.triangles)
+            for (glm::vec3 &p : t.p)
+                p *= scale;
+        Grid g = adaptive(scaled);
+        expectWellFormed(g);
+        EXPECT_EQ(g.cellBoxes.size(), reference.cellBoxes.size()) << scale;
+        EXPECT_EQ(g.maxPerCell, reference.maxPerCell) << scale;
+    }
+}
+
+} // namespace
+} // namespace prism
