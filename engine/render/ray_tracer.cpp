@@ -2,15 +2,12 @@
 
 #include <algorithm>
 #include <cstring>
-#include <string>
 
-#include "core/error.h"
 #include "core/timer.h"
 #include "render/frame_params.h"
 #include "shaders/trace.comp.spv.h"
 #include "shared/trace_interface.h"
 #include "vk/barriers.h"
-#include "vk/vk_check.h"
 
 namespace prism {
 namespace {

@@ -18,7 +18,6 @@ struct PrimitiveIds {
     explicit PrimitiveIds(const Scene &scene);
 
     uint32_t first(uint32_t kind) const { return gpu::primitiveIdFirst(end, kind); }
-    uint32_t id(uint32_t kind, uint32_t index) const { return first(kind) + index; }
     uint32_t count() const { return end[gpu::kFiniteKindCount - 1]; }
 
     struct Decoded {

@@ -78,7 +78,6 @@ TEST(ScenePacking, PrimitiveIdRangesFollowTheKinds) {
     EXPECT_EQ(ids.first(gpu::kKindSphere), 0u);
     EXPECT_EQ(ids.first(gpu::kKindTriangle), 3u);
     EXPECT_EQ(ids.count(), 11u);
-    EXPECT_EQ(ids.id(gpu::kKindTriangle, 2), 5u);
     PrimitiveIds::Decoded d = ids.decode(5);
     EXPECT_EQ(d.kind, gpu::kKindTriangle);
     EXPECT_EQ(d.index, 2u);
