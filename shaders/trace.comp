@@ -15,7 +15,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "shared/trace_interface.h"
 #include "shared/sampling.h"
 #include "trace_bindings.glsl"
-#include "loop_budget.glsl"
+#include "loop_limit.glsl"
 #include "intersect.glsl"
 #include "traverse.glsl"
 #include "surface.glsl"
@@ -53,7 +53,6 @@ vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color,
     vec3 result = materialAmbient(m) * color * header.ambient.rgb;
     uint lights = headerLightCount(header);
     for (uint l = 0u; l < lights; ++l) {
-        if (!loopTick()) break;
         GpuLight light = lightAt(l);
         vec3 toLight = normalize(lightPosition(light) - s.position);
         float nDotL = dot(n, toLight);
@@ -90,7 +89,6 @@ vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color,
                           (materialDiffuse(m) * color * nDotL + materialSpecular(m) * specular);
             }
         }
-        loopSync();
     }
     return result;
 }
@@ -115,7 +113,6 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
     vec3 radiance = vec3(0.0);
     pushRay(origin, dir, vec3(1.0), 1u);
     while (gStackSize > 0u) {
-        if (!loopTick()) break;
         PendingRay ray = gStack[--gStackSize];
         if (ray.depth > 1u)
             gSecondaryRays += 1u;
@@ -161,7 +158,6 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
                 }
             }
         }
-        loopSync();
     }
     return radiance;
 }
@@ -183,25 +179,29 @@ void main() {
     uint pixelIndex = pixel.y * frame.image.x + pixel.x;
     uint sampleIndex = frameSampleIndex(frame);
     vec3 radiance = vec3(0.0);
+    vec4 aov = vec4(0.0, 0.0, 0.0, kInfinity);
     if (inside) {
         vec3 origin, dir;
         cameraRay(samplePosition(pixel, pixelIndex, sampleIndex), origin, dir);
         radiance = traceSample(origin, dir, pixelIndex, sampleIndex);
-        if (gOverBudget)
-            radiance = vec3(1.0, 0.0, 1.0); // magenta: the host refuses to save such an image
-        vec4 sum = sampleIndex == 0u ? vec4(0.0) : imageLoad(accumImage, ivec2(pixel));
-        imageStore(accumImage, ivec2(pixel), sum + vec4(radiance, 1.0));
-
         if (WRITE_AOV && sampleIndex == 0u) {
             cameraRay(vec2(pixel) + 0.5, origin, dir);
             Hit hit;
-            vec4 aov = vec4(0.0, 0.0, 0.0, kInfinity);
             if (traceClosest(origin, dir, kInfinity, hit)) {
                 vec3 ng = surfaceAt(origin, dir, hit).geometricNormal;
                 aov = vec4(dot(ng, dir) > 0.0 ? -ng : ng, hit.t);
             }
-            imageStore(aovImage, ivec2(pixel), aov);
         }
     }
-    addCounts(inside ? 1u : 0u, gShadowRays, gSecondaryRays, gOverBudget ? 1u : 0u);
+    // Last, after every other loop of the invocation (loop_limit.glsl).
+    bool cut = loopLimitReached();
+    if (inside) {
+        if (cut)
+            radiance = vec3(1.0, 0.0, 1.0); // magenta: the host refuses to save such an image
+        vec4 sum = sampleIndex == 0u ? vec4(0.0) : imageLoad(accumImage, ivec2(pixel));
+        imageStore(accumImage, ivec2(pixel), sum + vec4(radiance, 1.0));
+        if (WRITE_AOV && sampleIndex == 0u)
+            imageStore(aovImage, ivec2(pixel), aov);
+    }
+    addCounts(inside ? 1u : 0u, gShadowRays, gSecondaryRays, (inside && cut) ? 1u : 0u);
 }

@@ -15,9 +15,6 @@ layout(constant_id = kSpecHasAreaLights) const bool HAS_AREA_LIGHTS = true;
 layout(constant_id = kSpecHasVertexNormals) const bool HAS_VERTEX_NORMALS = true;
 layout(constant_id = kSpecHasShadows) const bool HAS_SHADOWS = true;
 layout(constant_id = kSpecWriteAov) const bool WRITE_AOV = false;
-// Loop iterations one invocation may run (0: unlimited). lavapipe stops any invocation after
-// 65,535 loop iterations without telling anyone; we stop first and report it.
-layout(constant_id = kSpecLoopBudget) const uint LOOP_BUDGET = 0u;
 layout(constant_id = kSpecStackSize) const uint STACK_SIZE = 9u;
 // Read the arrays that have texel views through them instead of storage buffers (faster on
 // lavapipe, and not capped at maxStorageBufferRange; docs/benchmarks.md).

@@ -10,7 +10,6 @@ bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
     hit.b12 = vec2(0.0);
     if (HAS_PLANES) {
         for (uint i = 0u; i < headerPlaneCount(header); ++i) {
-            if (!loopTick()) break;
             float t;
             if (intersectPlane(origin, dir, planeEquation(i), hit.t, t)) {
                 hit.t = t;
@@ -36,7 +35,6 @@ bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
                 walk = startWalk(origin, dir, invDir, tEnter);
             bool walking = true;
             while (walking) {
-                if (!loopTick()) break;
                 uint cell;
                 float tCellExit;
                 if (ADAPTIVE_GRID) {
@@ -52,7 +50,6 @@ bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
 #else
                 for (uint k = cellStartAt(cell); k < end; ++k) {
 #endif
-                    if (!loopTick()) break;
                     testPrimitive(cellPrimitiveAt(k), origin, dir, wray, hit);
                 }
 #if TRACE_RAY_ANY_HIT
@@ -64,11 +61,8 @@ bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
                 walking = hit.t > tCellExit && tCellExit < tExit;
 #endif
                 walking = walking &&
-                          (ADAPTIVE_GRID ? stepBoxWalk(boxWalk, origin, dir) : stepWalk(walk)) &&
-                          !gOverBudget;
-                loopSync();
+                          (ADAPTIVE_GRID ? stepBoxWalk(boxWalk, origin, dir) : stepWalk(walk));
             }
-            loopSync();
         }
     }
     return hit.kind != kKindNone;

@@ -84,16 +84,12 @@ uint adaptiveCellAt(ivec3 v) {
     int shift = int(header.voxels.w);
     uint entry = gridEntryAt(cellIndex(v >> shift));
     while (entrySplit(entry) != 0u) {
-        if (!loopTick()) break;
         int split = int(entrySplit(entry));
         shift -= split;
         ivec3 part = (v >> shift) & ((1 << split) - 1);
         entry = gridEntryAt(entryTarget(entry) + uint(part.x + (part.y << split) +
                                                       (part.z << (2 * split))));
     }
-    // lavapipe counts a loop's exit as well; the walk runs this loop at every step, so it is
-    // counted too, to keep the count above lavapipe's.
-    loopTick();
     return entryTarget(entry);
 }
 

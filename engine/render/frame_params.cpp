@@ -13,7 +13,7 @@ gpu::GpuFrameParams makeFrameParams(const Camera &camera, uint32_t width, uint32
     p.du = glm::vec4(glm::vec3(f.du), 0.0f);
     p.dv = glm::vec4(glm::vec3(f.dv), 0.0f);
     p.image = glm::uvec4(width, height, 0u, samplesPerPixel);
-    p.control = glm::uvec4(maxDepth, 1u, 0u, 0u);
+    p.control = glm::uvec4(maxDepth, gpu::kLoopProbeRuns, 0u, 0u);
     return p;
 }
 

@@ -27,7 +27,7 @@ ArrayLimits arrayLimits(const vk::Context &context, const TracerOptions &options
 
 RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid, uint32_t width,
                      uint32_t height, const TracerOptions &options)
-    : context_(context), features_(chooseFeatures(scene, grid, options, context.isLavapipe())),
+    : context_(context), features_(chooseFeatures(scene, grid, options)),
       limits_(arrayLimits(context, options)), runner_(context),
       scene_(uploadScene(context, runner_, packScene(scene, grid), limits_)),
       stats_(context, sizeof(gpu::GpuStats),

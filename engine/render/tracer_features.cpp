@@ -4,19 +4,10 @@
 #include <string>
 
 #include "core/error.h"
-#include "render/loop_bound.h"
 #include "scene/primitive_ids.h"
 #include "shared/trace_interface.h"
 
 namespace prism {
-namespace {
-
-// lavapipe silently ends an invocation's loops after 65,535 iterations in total; the tracer
-// stops a little earlier (its own count is conservative) and reports the pixel instead.
-constexpr uint32_t kLavapipeLoopBudget = 60000;
-
-} // namespace
-
 TracerFeatures featuresOf(const Scene &scene) {
     TracerFeatures f;
     PrimitiveIds ids(scene);
@@ -38,8 +29,7 @@ TracerFeatures featuresOf(const Scene &scene) {
     return f;
 }
 
-TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const TracerOptions &options,
-                              bool deviceCutsLongLoops) {
+TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const TracerOptions &options) {
     if (options.maxDepth < 1 || options.maxDepth > 64)
         throw Error("ray depth " + std::to_string(options.maxDepth) + " is outside 1..64");
     TracerFeatures f = featuresOf(scene);
@@ -50,14 +40,6 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     f.shadows = options.shadows;
     f.reflection = f.reflection && options.reflection;
     f.transmission = f.transmission && options.transmission;
-    if (options.loopBudget >= 0)
-        f.loopBudget = uint32_t(options.loopBudget);
-    else if (deviceCutsLongLoops)
-        f.loopBudget = invocationIterationBound(scene, grid, f) < kLavapipeLoopBudget
-                           ? 0u // provably within lavapipe's limit: no counting needed
-                           : kLavapipeLoopBudget;
-    else
-        f.loopBudget = 0u;
     return f;
 }
 
@@ -71,7 +53,6 @@ std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
             {gpu::kSpecHasVertexNormals, vertexNormals},
             {gpu::kSpecHasShadows, shadows},
             {gpu::kSpecWriteAov, writeAov},
-            {gpu::kSpecLoopBudget, loopBudget},
             {gpu::kSpecStackSize, stackSize},
             {gpu::kSpecTexelBuffers, texelBuffers},
             {gpu::kSpecAdaptiveGrid, adaptiveGrid}};

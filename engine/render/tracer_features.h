@@ -17,7 +17,6 @@ struct TracerOptions {
     bool shadows = true;
     bool reflection = true;   // false: off even where materials reflect (feature-cost study)
     bool transmission = true; // likewise for refraction
-    int64_t loopBudget = -1;  // -1: the device's own limit (lavapipe: 60,000; GPUs: none)
     // Read grid cells, spheres and triangles through uniform texel buffers rather than storage
     // buffers: 10-18% faster on lavapipe (measured in docs/benchmarks.md).
     bool texelBuffers = true;
@@ -35,7 +34,6 @@ struct TracerFeatures {
     bool vertexNormals = false;
     bool shadows = true;
     bool writeAov = false;
-    uint32_t loopBudget = 0; // 0: unlimited
     uint32_t maxDepth = 5;
     bool texelBuffers = false; // arrays with texel views read through them
     bool adaptiveGrid = false; // the grid is adaptive (accel/grid.h)
@@ -44,13 +42,11 @@ struct TracerFeatures {
     std::vector<vk::SpecializationConstant> specialization() const;
 };
 
-// What the scene's content asks for (options at their defaults, no loop budget).
+// What the scene's content asks for (options at their defaults).
 TracerFeatures featuresOf(const Scene &scene);
 
-// The variant to compile: the scene's features with the caller's options applied, and a loop
-// budget only where the device cuts loops short (lavapipe) and the scene could reach its limit.
+// The variant to compile: the scene's features with the caller's options applied.
 // Throws prism::Error for a depth outside 1..64.
-TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const TracerOptions &options,
-                              bool deviceCutsLongLoops);
+TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const TracerOptions &options);
 
 } // namespace prism

@@ -162,7 +162,7 @@ struct GpuStats {
     uint64_t primaryRays;
     uint64_t shadowRays;
     uint64_t secondaryRays;
-    uint64_t overBudgetPixels; // pixels whose walk reached the loop budget
+    uint64_t overBudgetPixels; // pixels lavapipe's loop limit cut short (loop_limit.glsl)
 };
 
 // Per-frame parameters (push constants, 128 bytes at most).
@@ -172,7 +172,7 @@ struct GpuFrameParams {
     vec4 du;       // right scaled by h*a (perspective) or (H/2)*a (ortho)
     vec4 dv;       // true up scaled by h (perspective) or H/2 (ortho)
     uvec4 image;   // x width, y height, z this dispatch's sample index, w samples per pixel
-    uvec4 control; // x: max depth
+    uvec4 control; // x: max depth, y: kLoopProbeRuns
 };
 PRISM_INLINE bool isParallelCamera(PRISM_IN(GpuFrameParams) f) {
     return f.eye.w != 0.0f;
@@ -185,6 +185,11 @@ PRISM_INLINE uint frameSamplesPerPixel(PRISM_IN(GpuFrameParams) f) {
 }
 PRISM_INLINE uint frameMaxDepth(PRISM_IN(GpuFrameParams) f) {
     return f.control.x;
+}
+// Iterations of the loop that tells whether lavapipe cut the invocation (loop_limit.glsl).
+PRISM_CONST(uint, kLoopProbeRuns, 2u);
+PRISM_INLINE uint frameLoopProbe(PRISM_IN(GpuFrameParams) f) {
+    return f.control.y;
 }
 
 PRISM_NAMESPACE_END

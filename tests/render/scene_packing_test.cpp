@@ -98,7 +98,7 @@ TEST(TracerFeatures, FollowTheScene) {
     std::map<uint32_t, uint32_t> constants;
     for (vk::SpecializationConstant c : f.specialization())
         EXPECT_TRUE(constants.emplace(c.id, c.value).second) << "constant_id " << c.id << " twice";
-    EXPECT_EQ(constants.size(), 12u); // every constant_id of shared/trace_interface.h
+    EXPECT_EQ(constants.size(), 11u); // every constant_id of shared/trace_interface.h
     EXPECT_EQ(constants.at(gpu::kSpecAdaptiveGrid), 0u);
     EXPECT_EQ(constants.at(gpu::kSpecKinds), 0b111u) << "spheres, triangles and planes";
     EXPECT_EQ(constants.at(gpu::kSpecStackSize), 9u) << "stack holds 2 * depth - 1 rays";
@@ -121,6 +121,7 @@ TEST(FrameParams, FollowTheCameraModel) {
     EXPECT_EQ(p.eye.w, 1.0f);
     EXPECT_NEAR(p.du.x, 4.0f, 1e-6f); // H/2 * aspect
     EXPECT_NEAR(p.dv.y, 2.0f, 1e-6f);
+    EXPECT_EQ(gpu::frameLoopProbe(p), gpu::kLoopProbeRuns) << "loop_limit.glsl's probe";
 }
 
 } // namespace

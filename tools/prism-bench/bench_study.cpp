@@ -53,7 +53,6 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
             options.maxDepth = settings.maxDepth;
             auto tracer = std::make_unique<RayTracer>(context, scene, grid, settings.width,
                                                       settings.height, options);
-            r.loopCounting = tracer->features().loopBudget != 0;
             FrameResult warm = tracer->renderFrame(scene.camera, settings.samplesPerPixel);
             r.rays = warm.rays;
             results.push_back(r);

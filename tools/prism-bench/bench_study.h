@@ -24,7 +24,6 @@ struct BenchResult {
     uint64_t primitives = 0;
     std::string grid;
     uint32_t maxPerCell = 0;
-    bool loopCounting = false;
     double buildMs = 0.0;
     std::vector<double> frameMs; // GPU time of each timed frame
     RayCounts rays;              // of one frame

@@ -34,12 +34,10 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.tracer.shadows = false;
         } else if (token == "texel" || token == "storage") {
             v.tracer.texelBuffers = token == "texel";
-        } else if (token == "count-loops") {
-            v.tracer.loopBudget = 60000;
         } else {
             throw Error("variant " + text + ": unknown part '" + token +
                         "' (use auto, off, adaptive, grid=N|NxNyNz, density=L, no-reflection, "
-                        "no-refraction, no-shadows, texel, storage, count-loops; join with +)");
+                        "no-refraction, no-shadows, texel, storage; join with +)");
         }
     }
     return v;

@@ -39,11 +39,10 @@ void printTable(const std::vector<BenchResult> &results, const BenchSettings &s,
             scene = r.scene;
             first = r.medianMs();
         }
-        std::printf("| %s | %s%s | %llu | %s | %u | %.1f | %.1f | %.2f | %llu | %.2f |\n",
-                    r.scene.c_str(), r.variant.c_str(), r.loopCounting ? " (counted)" : "",
-                    (unsigned long long)r.primitives, r.grid.c_str(), r.maxPerCell, r.buildMs,
-                    r.medianMs(), r.mraysPerSecond(), (unsigned long long)r.rays.total(),
-                    first > 0.0 ? r.medianMs() / first : 0.0);
+        std::printf("| %s | %s | %llu | %s | %u | %.1f | %.1f | %.2f | %llu | %.2f |\n",
+                    r.scene.c_str(), r.variant.c_str(), (unsigned long long)r.primitives,
+                    r.grid.c_str(), r.maxPerCell, r.buildMs, r.medianMs(), r.mraysPerSecond(),
+                    (unsigned long long)r.rays.total(), first > 0.0 ? r.medianMs() / first : 0.0);
     }
 }
 
@@ -53,7 +52,6 @@ nlohmann::json toJson(const BenchResult &r) {
             {"primitives", r.primitives},
             {"grid", r.grid},
             {"max_per_cell", r.maxPerCell},
-            {"loop_counting", r.loopCounting},
             {"build_ms", r.buildMs},
             {"frame_ms", r.frameMs},
             {"trace_ms_median", r.medianMs()},
@@ -87,8 +85,7 @@ int main(int argc, char **argv) {
            "--variants", variantList,
            "Comma-separated variants: auto, off, adaptive, grid=N|NxNyNz, density=L, "
            "no-reflection, no-refraction, no-shadows, texel or storage (how the hot arrays are "
-           "read), count-loops; "
-           "join parts with +")
+           "read); join parts with +")
         ->default_val(variantList);
     app.add_option("--json", jsonPath, "Also write every result (all frame times) as JSON");
     app.add_option("--device", deviceFilter, "First Vulkan device whose name contains this");

@@ -111,7 +111,7 @@ bool Overlay::build(const OverlayStats &s, FeatureToggles &toggles, bool visible
         ImGui::Checkbox("grid", &toggles.grid);
         if (s.overBudgetPixels > 0)
             ImGui::TextColored(ImVec4(1.0f, 0.4f, 1.0f, 1.0f),
-                               "%llu pixels over the loop budget (magenta)",
+                               "%llu pixels cut by the loop limit (magenta)",
                                static_cast<unsigned long long>(s.overBudgetPixels));
         if (!s.sceneError.empty()) {
             ImGui::Separator();

@@ -325,7 +325,7 @@ void Viewer::saveScreenshot(const std::filesystem::path &base) {
     FrameResult accumulation = minus(lastCounters_, accumulationBase_);
     if (accumulation.overBudgetPixels > 0) {
         notice_ = std::to_string(accumulation.overBudgetPixels) +
-                  " pixels over the loop budget; screenshot not saved";
+                  " pixels cut by the loop limit; screenshot not saved";
         std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
         return;
     }
