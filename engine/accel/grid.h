@@ -3,6 +3,7 @@
 // (CSR: per-cell offsets + one primitive-id array) for upload to the GPU. Infinite planes stay
 // outside it. No Vulkan here.
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -14,9 +15,12 @@ namespace prism {
 
 struct GridOptions {
     enum class Mode {
-        Auto,  // cells ~ density * primitives, aspect following the bounds
-        Off,   // one cell holding everything: every ray tests every primitive
-        Fixed, // resolution given by the user
+        // Regular or adaptive, whichever the tracer's counted work on the camera's rays says is
+        // cheaper (accel/grid_choice.h).
+        Auto,
+        Regular, // cells ~ density * primitives, aspect following the bounds
+        Off,     // one cell holding everything: every ray tests every primitive
+        Fixed,   // resolution given by the user
         // A coarse top grid whose crowded cells are split again, level by level, each to its
         // own density (a power of two per axis): dense regions get small cells, sparse
         // regions large ones, so a small dense object in a large scene is not one cell.
@@ -24,12 +28,13 @@ struct GridOptions {
     };
     Mode mode = Mode::Auto;
     glm::ivec3 resolution{1}; // Fixed only
-    // Auto only: target cells per primitive (lambda). Measured, see docs/grid-density.md.
+    // Regular (and Auto's regular grid): target cells per primitive (lambda). Measured, see
+    // docs/grid-density.md.
     float density = 4.0f;
 };
 
-// Parses --grid's argument: "auto", "off", "adaptive", "N" (N^3) or "NxNyNz", each count in
-// 1..1024.
+// Parses --grid's argument: "auto", "regular", "off", "adaptive", "N" (N^3) or "NxNyNz", each
+// count in 1..1024.
 // Throws prism::Error with a message naming the bad text.
 GridOptions parseGridOption(std::string_view text);
 
@@ -57,6 +62,7 @@ struct Grid {
     uint32_t depth = 0; // the deepest leaf's level below the top (a lookup's iterations)
 
     uint32_t maxPerCell = 0; // the fullest cell's count, for --stats and the benchmarks
+    std::string choice;      // Auto only: which grid it chose, and the counts it chose by
 
     bool adaptive() const { return !entries.empty(); }
     // Cells holding primitive lists.

@@ -10,6 +10,7 @@
 #include "accel/cell_binner.h"
 #include "accel/finite_primitives.h"
 #include "accel/grid.h"
+#include "accel/grid_choice.h"
 #include "accel/grid_resolution.h"
 #include "core/error.h"
 
@@ -70,7 +71,9 @@ Lattice wholeGrid(const Grid &grid) {
     return l;
 }
 
-Grid buildGrid(const Scene &scene, const GridOptions &options) {
+namespace {
+
+Grid buildOneGrid(const Scene &scene, const GridOptions &options) {
     FinitePrimitives finite(scene);
     Aabb bounds = paddedBounds(finiteBounds(finite));
     Grid grid;
@@ -96,6 +99,7 @@ Grid buildGrid(const Scene &scene, const GridOptions &options) {
                                            kAdaptiveTopDensity);
         break;
     case GridOptions::Mode::Auto:
+    case GridOptions::Mode::Regular:
         grid.resolution = chooseResolution(glm::dvec3(grid.boundsMax - grid.boundsMin), primitives,
                                            double(options.density));
         break;
@@ -124,6 +128,18 @@ Grid buildGrid(const Scene &scene, const GridOptions &options) {
         binner.bin(id, finite, pairs);
     fillCells(grid, pairs);
     return grid;
+}
+
+} // namespace
+
+Grid buildGrid(const Scene &scene, const GridOptions &options) {
+    if (options.mode != GridOptions::Mode::Auto)
+        return buildOneGrid(scene, options);
+    return chooseGrid(scene, [&](GridOptions::Mode mode) {
+        GridOptions one = options;
+        one.mode = mode;
+        return buildOneGrid(scene, one);
+    });
 }
 
 } // namespace prism

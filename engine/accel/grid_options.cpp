@@ -11,7 +11,7 @@ namespace {
 
 [[noreturn]] void badGrid(std::string_view text, const std::string &why) {
     throw Error("--grid " + std::string(text) + ": " + why +
-                " (expected auto, off, adaptive, N or NxNyNz with counts 1.." +
+                " (expected auto, regular, off, adaptive, N or NxNyNz with counts 1.." +
                 std::to_string(kMaxGridAxisCells) + ")");
 }
 
@@ -33,6 +33,10 @@ GridOptions parseGridOption(std::string_view text) {
         return options;
     if (text == "off") {
         options.mode = GridOptions::Mode::Off;
+        return options;
+    }
+    if (text == "regular") {
+        options.mode = GridOptions::Mode::Regular;
         return options;
     }
     if (text == "adaptive") {

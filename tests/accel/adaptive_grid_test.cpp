@@ -71,7 +71,7 @@ TEST(AdaptiveGrid, CellsListExactlyTheOverlappingPrimitives) {
 // cell holds a few primitives, where one regular grid of the same budget holds hundreds.
 TEST(AdaptiveGrid, FollowsAClusterInARoom) {
     Scene scene = test::clusterInARoom(44, 3000, 0);
-    Grid regular = buildGrid(scene);
+    Grid regular = buildGrid(scene, parseGridOption("regular"));
     Grid g = adaptive(scene);
     expectWellFormed(g);
     EXPECT_GT(regular.maxPerCell, 500u);

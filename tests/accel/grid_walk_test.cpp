@@ -139,7 +139,7 @@ TEST(GridWalk, FindsEveryCrossingInAFlatScene) {
     for (Triangle &t : scene.triangles)
         for (glm::vec3 &p : t.p)
             p.y = 0.25f; // every triangle in one plane: a 2D grid
-    Grid g = buildGrid(scene);
+    Grid g = buildGrid(scene, parseGridOption("regular"));
     EXPECT_EQ(g.resolution.y, 1);
     checkRays(scene, g, 3, 3000);
 }

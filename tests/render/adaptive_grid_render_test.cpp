@@ -38,7 +38,8 @@ class AdaptiveGridRender : public GpuTest, public ::testing::WithParamInterface<
 TEST_P(AdaptiveGridRender, MatchesTheRegularGrid) {
     Scene scene = loadScene(std::filesystem::path(PRISM_SCENES_DIR) / (GetParam() + ".scene"));
     const uint32_t width = 64, height = 48, spp = 1, depth = 3;
-    GpuRender regular = renderGpu(context(), scene, width, height, spp, depth);
+    GpuRender regular =
+        renderGpu(context(), scene, width, height, spp, depth, parseGridOption("regular"));
     GpuRender adaptive =
         renderGpu(context(), scene, width, height, spp, depth, parseGridOption("adaptive"));
     EXPECT_EQ(adaptive.frame.overBudgetPixels, 0u);

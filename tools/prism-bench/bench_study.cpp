@@ -45,10 +45,13 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
             r.buildMs = build.elapsedMs();
             r.grid = variant.grid.mode == GridOptions::Mode::Off
                          ? "off"
-                         : std::to_string(grid.resolution.x) + "x" +
+                         : std::string(grid.adaptive() ? "adaptive " : "") +
+                               std::to_string(grid.resolution.x) + "x" +
                                std::to_string(grid.resolution.y) + "x" +
                                std::to_string(grid.resolution.z);
             r.maxPerCell = grid.maxPerCell;
+            r.gridBytes = grid.bytes();
+            r.walk = countWalks(scene, grid, double(settings.width) / double(settings.height));
             TracerOptions options = variant.tracer;
             options.maxDepth = settings.maxDepth;
             auto tracer = std::make_unique<RayTracer>(context, scene, grid, settings.width,

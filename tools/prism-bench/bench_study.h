@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "accel/walk_counts.h"
 #include "bench_variant.h"
 #include "core/ray_counts.h"
 #include "vk/context.h"
@@ -24,6 +25,8 @@ struct BenchResult {
     uint64_t primitives = 0;
     std::string grid;
     uint32_t maxPerCell = 0;
+    uint64_t gridBytes = 0;
+    WalkCounts walk; // the grid's work per primary ray, counted on the CPU
     double buildMs = 0.0;
     std::vector<double> frameMs; // GPU time of each timed frame
     RayCounts rays;              // of one frame

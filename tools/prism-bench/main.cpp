@@ -1,6 +1,7 @@
 // prism-bench: times scenes under tracer variants (grid choices, features off) on one Vulkan
 // device and prints a Markdown table: median GPU ms over several interleaved frames, Mrays/s,
 // and each variant's time relative to the first variant of its scene.
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -30,8 +31,9 @@ void printTable(const std::vector<BenchResult> &results, const BenchSettings &s,
                 const std::string &device) {
     std::printf("Device: %s; %ux%u, %u spp, depth %u; median of %u frames after a warm-up.\n\n",
                 device.c_str(), s.width, s.height, s.samplesPerPixel, s.maxDepth, s.runs);
-    std::printf("| scene | variant | primitives | grid | max/cell | build ms | trace ms (median) "
-                "| Mrays/s | rays | vs first |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("| scene | variant | primitives | grid | max/cell | bytes/prim | cells/ray | "
+                "tests/ray | build ms | trace ms (median) | Mrays/s | rays | vs first |\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     double first = 0.0;
     std::string scene;
     for (const BenchResult &r : results) {
@@ -39,10 +41,13 @@ void printTable(const std::vector<BenchResult> &results, const BenchSettings &s,
             scene = r.scene;
             first = r.medianMs();
         }
-        std::printf("| %s | %s | %llu | %s | %u | %.1f | %.1f | %.2f | %llu | %.2f |\n",
-                    r.scene.c_str(), r.variant.c_str(), (unsigned long long)r.primitives,
-                    r.grid.c_str(), r.maxPerCell, r.buildMs, r.medianMs(), r.mraysPerSecond(),
-                    (unsigned long long)r.rays.total(), first > 0.0 ? r.medianMs() / first : 0.0);
+        std::printf(
+            "| %s | %s | %llu | %s | %u | %.0f | %.2f | %.2f | %.1f | %.1f | %.2f | %llu | "
+            "%.2f |\n",
+            r.scene.c_str(), r.variant.c_str(), (unsigned long long)r.primitives, r.grid.c_str(),
+            r.maxPerCell, double(r.gridBytes) / double(std::max<uint64_t>(1, r.primitives)),
+            r.walk.cellsPerRay, r.walk.testsPerRay, r.buildMs, r.medianMs(), r.mraysPerSecond(),
+            (unsigned long long)r.rays.total(), first > 0.0 ? r.medianMs() / first : 0.0);
     }
 }
 
@@ -52,6 +57,9 @@ nlohmann::json toJson(const BenchResult &r) {
             {"primitives", r.primitives},
             {"grid", r.grid},
             {"max_per_cell", r.maxPerCell},
+            {"grid_bytes", r.gridBytes},
+            {"cells_per_primary_ray", r.walk.cellsPerRay},
+            {"tests_per_primary_ray", r.walk.testsPerRay},
             {"build_ms", r.buildMs},
             {"frame_ms", r.frameMs},
             {"trace_ms_median", r.medianMs()},
@@ -83,7 +91,7 @@ int main(int argc, char **argv) {
         ->default_val(5);
     app.add_option(
            "--variants", variantList,
-           "Comma-separated variants: auto, off, adaptive, grid=N|NxNyNz, density=L, "
+           "Comma-separated variants: auto, regular, off, adaptive, grid=N|NxNyNz, density=L, "
            "no-reflection, no-refraction, no-shadows, texel or storage (how the hot arrays are "
            "read); join parts with +")
         ->default_val(variantList);

@@ -55,12 +55,15 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
         ->check(CLI::Range(1u, 16u))
         ->default_val(5);
     app.add_option("--grid", options.gridText,
-                   "Grid: auto (regular, sized to the scene), adaptive (experimental: cells that "
-                   "follow the geometry), off (test every primitive), N (N^3 cells) or NxNyNz")
+                   "Grid: auto (regular or adaptive, whichever costs the camera's rays less; "
+                   "--stats says which and why), regular (sized to the scene), adaptive (cells "
+                   "that follow the geometry), off (test every primitive), N (N^3 cells) or "
+                   "NxNyNz")
         ->default_val("auto");
     float density = GridOptions{}.density;
     app.add_option("--grid-density", density,
-                   "With --grid auto: target cells per primitive (lambda; see "
+                   "With --grid auto or regular: the regular grid's target cells per primitive "
+                   "(lambda; see "
                    "docs/grid-density.md)")
         ->check(CLI::Range(0.01f, 1000.0f))
         ->default_val(density);

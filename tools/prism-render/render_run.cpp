@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "accel/walk_counts.h"
 #include "core/error.h"
 #include "core/timer.h"
 #include "io/image_writer.h"
@@ -149,6 +150,8 @@ void runRender(const RenderOptions &o) {
     writeImage(o.outputPath, out.image, meta);
 
     if (o.stats) {
+        // The grid's work per primary ray, counted on the CPU (a 48-column lattice of rays).
+        WalkCounts walk = countWalks(scene, grid, double(o.width) / double(o.height));
         nlohmann::json stats = {
             {"scene", o.scenePath.string()},
             {"backend", o.backend == Backend::Cpu ? "cpu" : "vulkan"},
@@ -164,6 +167,9 @@ void runRender(const RenderOptions &o) {
             {"grid_mean_per_cell",
              double(grid.cellPrimitives.size()) / double(std::max<uint64_t>(1, grid.cellCount()))},
             {"grid_max_per_cell", grid.maxPerCell},
+            {"grid_choice", grid.choice},
+            {"grid_cells_per_primary_ray", walk.cellsPerRay},
+            {"grid_tests_per_primary_ray", walk.testsPerRay},
             {"load_ms", loadMs},
             {"build_ms", buildMs},
             {"trace_ms", bestMs},

@@ -30,11 +30,13 @@ bool parseViewOptions(int argc, char **argv, ViewOptions &options, ViewScript &s
         ->check(CLI::Range(1u, 16u))
         ->default_val(5);
     app.add_option("--grid", grid,
-                   "Grid: auto, adaptive, off (test every primitive), N (N^3 cells) or NxNyNz")
+                   "Grid: auto (regular or adaptive, by cost), regular, adaptive, off (test every "
+                   "primitive), N (N^3 cells) or NxNyNz")
         ->default_val("auto");
     float density = GridOptions{}.density;
     app.add_option("--grid-density", density,
-                   "With --grid auto: target cells per primitive (docs/grid-density.md)")
+                   "With --grid auto or regular: the regular grid's target cells per primitive "
+                   "(docs/grid-density.md)")
         ->check(CLI::Range(0.01f, 1000.0f))
         ->default_val(density);
     app.add_option("--vsync", vsync,

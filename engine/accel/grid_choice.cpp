@@ -1,0 +1,52 @@
+#include "accel/grid_choice.h"
+
+#include <cstdio>
+#include <string>
+
+namespace prism {
+namespace {
+
+// The lattice of rays is 4:3; the render's own size is not known when the grid is built.
+constexpr double kChoiceAspect = 4.0 / 3.0;
+
+std::string describe(const char *name, const WalkCounts &counts, double cost) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%s %.1f (%.2f cells, %.2f tests a ray)", name, cost,
+                  counts.cellsPerRay, counts.testsPerRay);
+    return text;
+}
+
+} // namespace
+
+double walkCost(const WalkCounts &counts, bool adaptive) {
+    return counts.testsPerRay +
+           counts.cellsPerRay * (adaptive ? kAdaptiveStepCost : kRegularStepCost);
+}
+
+Grid chooseGrid(const Scene &scene, const std::function<Grid(GridOptions::Mode)> &build) {
+    Grid regular = build(GridOptions::Mode::Regular);
+    if (scene.finitePrimitiveCount() == 0) {
+        regular.choice = "regular (nothing to grid)";
+        return regular;
+    }
+    WalkCounts regularCounts = countWalks(scene, regular, kChoiceAspect);
+    double regularCost = walkCost(regularCounts, false);
+    std::string regularText = describe("regular", regularCounts, regularCost);
+    if (regularCost < kConsiderAdaptiveCost) {
+        regular.choice = "regular: cost " + regularText + " is low";
+        return regular;
+    }
+    Grid adaptive = build(GridOptions::Mode::Adaptive);
+    WalkCounts adaptiveCounts = countWalks(scene, adaptive, kChoiceAspect);
+    double adaptiveCost = walkCost(adaptiveCounts, true);
+    std::string both =
+        describe("adaptive", adaptiveCounts, adaptiveCost) + " against " + regularText;
+    if (adaptiveCost < kAdaptiveMargin * regularCost) {
+        adaptive.choice = "adaptive: cost " + both;
+        return adaptive;
+    }
+    regular.choice = "regular: cost " + both;
+    return regular;
+}
+
+} // namespace prism

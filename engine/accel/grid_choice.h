@@ -1,0 +1,33 @@
+#pragma once
+// `--grid auto`: the regular grid or the adaptive one, by what each costs the tracer on the
+// scene camera's primary rays (accel/walk_counts.h). A regular grid suits evenly spread scenes
+// and its DDA step is cheap; the adaptive grid wins where one grid crowds the primitives the
+// camera sees into few cells (a small object in a large scene), but each of its steps costs
+// more (a voxel-map lookup and a box), and its build is slower.
+#include <functional>
+
+#include "accel/grid.h"
+#include "accel/walk_counts.h"
+#include "scene/scene.h"
+
+namespace prism {
+
+// The tracer's work per ray in primitive tests: a test costs 1, a DDA step kRegularStepCost and
+// an adaptive step kAdaptiveStepCost. Measured on lavapipe: with the adaptive grid `bunny`
+// visits 1.7 cells and makes 2.2 tests per primary ray against the regular grid's 5.0 and 3.9,
+// yet traces 4-12% slower (docs/benchmarks.md, "Choosing the grid").
+constexpr double kRegularStepCost = 1.0;
+constexpr double kAdaptiveStepCost = 4.0;
+// Below this cost per ray on the regular grid the adaptive one is not built: it cannot save
+// enough (it still takes a step and a test a ray) to pay for its build.
+constexpr double kConsiderAdaptiveCost = 12.0;
+// The adaptive grid is chosen only when it is estimated at least this much cheaper.
+constexpr double kAdaptiveMargin = 0.9;
+
+double walkCost(const WalkCounts &counts, bool adaptive);
+
+// Builds the regular grid with build(Regular); where its cost calls for it, the adaptive one with
+// build(Adaptive), and returns the cheaper, with Grid::choice saying why.
+Grid chooseGrid(const Scene &scene, const std::function<Grid(GridOptions::Mode)> &build);
+
+} // namespace prism

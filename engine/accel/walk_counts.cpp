@@ -1,0 +1,60 @@
+#include "accel/walk_counts.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "accel/grid_walk.h"
+#include "reference/camera_model.h"
+#include "reference/intersect_reference.h"
+#include "scene/camera_frame.h"
+#include "scene/primitive_ids.h"
+
+namespace prism {
+namespace {
+
+// The nearest hit of primitive `id` closer than tMax, with the reference's exact tests.
+bool intersectId(const Scene &scene, const PrimitiveIds &ids, uint32_t id, const Ray &ray,
+                 const reference::WatertightRay &wray, double tMax, double &t) {
+    PrimitiveIds::Decoded d = ids.decode(id);
+    if (d.kind == gpu::kKindSphere) {
+        const Sphere &s = scene.spheres[d.index];
+        return reference::intersectSphere(ray, glm::dvec3(s.center), double(s.radius), tMax, t);
+    }
+    const Triangle &tri = scene.triangles[d.index];
+    glm::dvec2 b12;
+    return reference::intersectTriangle(ray, wray, glm::dvec3(tri.p[0]), glm::dvec3(tri.p[1]),
+                                        glm::dvec3(tri.p[2]), tMax, t, b12);
+}
+
+} // namespace
+
+WalkCounts countWalks(const Scene &scene, const Grid &grid, double aspect, int columns) {
+    PrimitiveIds ids(scene);
+    // A frame of the lattice's own size: its pixel centres are the rays.
+    int width = columns, height = std::max(1, int(double(columns) / aspect + 0.5));
+    CameraFrame frame = makeCameraFrame(scene.camera, width, height);
+    WalkCounts counts;
+    uint64_t cells = 0, tests = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            Ray ray = cameraRay(frame, glm::dvec2(x + 0.5, y + 0.5));
+            reference::WatertightRay wray = reference::makeWatertightRay(ray.dir);
+            double nearest = std::numeric_limits<double>::infinity();
+            walkGrid(grid, ray.origin, ray.dir, nearest, [&](uint32_t cell, double, double tExit) {
+                ++cells;
+                for (uint32_t k = grid.cellStart[cell]; k < grid.cellStart[cell + 1]; ++k) {
+                    ++tests;
+                    double t;
+                    if (intersectId(scene, ids, grid.cellPrimitives[k], ray, wray, nearest, t))
+                        nearest = t;
+                }
+                return nearest > tExit; // on until the nearest hit is in a cell reached
+            });
+            ++counts.rays;
+        }
+    counts.cellsPerRay = double(cells) / counts.rays;
+    counts.testsPerRay = double(tests) / counts.rays;
+    return counts;
+}
+
+} // namespace prism

@@ -1,0 +1,20 @@
+#pragma once
+// What a grid costs the tracer, counted on the CPU: a lattice of the scene camera's primary rays
+// walks the grid as the shader does (accel/grid_walk.h), testing each cell's primitives until
+// the nearest hit lies in the cell reached. The counts are the tracer's work per ray, exactly,
+// for those rays; --stats reports them, and `--grid auto` compares grids with them.
+#include "accel/grid.h"
+#include "scene/scene.h"
+
+namespace prism {
+
+struct WalkCounts {
+    uint32_t rays = 0;
+    double cellsPerRay = 0.0; // cells visited
+    double testsPerRay = 0.0; // primitive tests
+};
+
+// Rays through the pixel centres of a `columns` wide image of the given aspect (width / height).
+WalkCounts countWalks(const Scene &scene, const Grid &grid, double aspect, int columns = 48);
+
+} // namespace prism

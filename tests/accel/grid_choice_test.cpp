@@ -1,0 +1,75 @@
+// `--grid auto` picks the regular grid or the adaptive one by the tracer's work on the camera's
+// rays, counted on the CPU (accel/grid_choice.h, accel/walk_counts.h).
+#include <gtest/gtest.h>
+
+#include "accel/grid.h"
+#include "accel/grid_choice.h"
+#include "accel/walk_counts.h"
+#include "grid_test_scenes.h"
+
+namespace prism {
+namespace {
+
+// Spheres spread evenly in front of the camera: one regular grid suits them.
+Scene evenSpheres() {
+    Scene scene = test::randomSpheresAndTriangles(31, 400, 0);
+    scene.camera.eye = {0.0f, 0.0f, 30.0f};
+    return scene;
+}
+
+// A dense cluster in a large room, the camera close to the cluster: one grid fails there.
+Scene clusterSeenFromClose() {
+    Scene scene = test::clusterInARoom(51, 3000, 60);
+    scene.camera.eye = {0.0f, 0.5f, -4.0f};
+    scene.camera.look = {0.0f, 0.0f, 0.0f};
+    return scene;
+}
+
+TEST(WalkCounts, CountWhatTheWalkTests) {
+    Scene scene = clusterSeenFromClose();
+    Grid off = buildGrid(scene, parseGridOption("off"));
+    WalkCounts brute = countWalks(scene, off, 4.0 / 3.0, 16);
+    // One cell holding everything: every ray that enters it tests every primitive.
+    EXPECT_EQ(brute.rays, 16u * 12u);
+    EXPECT_LE(brute.cellsPerRay, 1.0);
+    EXPECT_NEAR(brute.testsPerRay, brute.cellsPerRay * double(scene.finitePrimitiveCount()), 1e-9);
+    WalkCounts adaptive =
+        countWalks(scene, buildGrid(scene, parseGridOption("adaptive")), 4.0 / 3.0, 16);
+    EXPECT_LT(adaptive.testsPerRay, brute.testsPerRay / 20.0);
+}
+
+TEST(GridChoice, EvenScenesKeepTheRegularGrid) {
+    Scene scene = evenSpheres();
+    Grid g = buildGrid(scene);
+    EXPECT_FALSE(g.adaptive()) << g.choice;
+    EXPECT_EQ(g.choice.rfind("regular", 0), 0u) << g.choice;
+    Grid regular = buildGrid(scene, parseGridOption("regular"));
+    EXPECT_EQ(g.cellPrimitives, regular.cellPrimitives) << "the very grid --grid regular builds";
+}
+
+TEST(GridChoice, AClusterInARoomGetsTheAdaptiveGrid) {
+    Scene scene = clusterSeenFromClose();
+    Grid g = buildGrid(scene);
+    EXPECT_TRUE(g.adaptive()) << g.choice;
+    EXPECT_EQ(g.choice.rfind("adaptive", 0), 0u) << g.choice;
+    Grid adaptive = buildGrid(scene, parseGridOption("adaptive"));
+    EXPECT_EQ(g.cellPrimitives, adaptive.cellPrimitives);
+    EXPECT_EQ(g.entries, adaptive.entries);
+}
+
+TEST(GridChoice, AnEmptySceneIsARegularGrid) {
+    Scene scene;
+    Grid g = buildGrid(scene);
+    EXPECT_FALSE(g.adaptive());
+    EXPECT_TRUE(g.cellPrimitives.empty());
+}
+
+TEST(GridChoice, OnlyAutoChooses) {
+    Scene scene = clusterSeenFromClose();
+    EXPECT_FALSE(buildGrid(scene, parseGridOption("regular")).adaptive());
+    EXPECT_TRUE(buildGrid(scene, parseGridOption("regular")).choice.empty());
+    EXPECT_EQ(parseGridOption("regular").mode, GridOptions::Mode::Regular);
+}
+
+} // namespace
+} // namespace prism
