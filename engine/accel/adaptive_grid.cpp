@@ -9,6 +9,7 @@
 #include "accel/cell_binner.h"
 #include "accel/cell_expansion.h"
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "shared/gpu_types.h"
 
 namespace prism {
@@ -28,11 +29,25 @@ uint32_t chooseShift(const glm::ivec3 &topResolution) {
     return shift;
 }
 
+// One top cell's subtree, built apart from the others so that top cells can be built in
+// parallel. Entries and cells are numbered from 0 within the fragment (entry 0 is the top cell's
+// own) and renumbered when the fragments are joined, in top-cell order: the grid is the same
+// whatever thread built what.
+struct Fragment {
+    std::vector<uint32_t> entries{0u};
+    std::vector<glm::uvec4> cellBoxes;
+    std::vector<uint32_t> cellCounts; // primitives per cell
+    std::vector<uint32_t> cellPrimitives;
+    uint32_t depth = 0;
+    uint32_t maxPerCell = 0;
+};
+
 class Splitter {
 public:
-    Splitter(Grid &grid, const FinitePrimitives &primitives, double density, double magnitude)
-        : grid_(grid), primitives_(primitives), density_(density), magnitude_(magnitude),
-          voxelSize_(glm::dvec3(grid.voxelSize())) {}
+    Splitter(Fragment &out, const Grid &grid, const FinitePrimitives &primitives, double density,
+             double magnitude, size_t budget)
+        : out_(out), grid_(grid), primitives_(primitives), density_(density), magnitude_(magnitude),
+          voxelSize_(glm::dvec3(grid.voxelSize())), budget_(budget) {}
 
     // Makes entry `entry` the cell, or the tree of cells, of the box of 2^sizeShift voxels per
     // axis from voxelMin, which `refs` overlap.
@@ -82,12 +97,12 @@ public:
         }
         refs = {}; // free before going down
 
-        size_t first = grid_.entries.size();
+        size_t first = out_.entries.size();
         if (first + children.count() > kMaxIndex)
-            throw Error("adaptive grid needs more than 2^28 voxel-map entries; use --grid auto");
-        grid_.entries.resize(first + children.count());
-        grid_.entries[entry] = uint32_t(first) << 4 | split;
-        grid_.depth = std::max(grid_.depth, level + 1);
+            throw Error("adaptive grid needs more than 2^28 voxel-map entries; use --grid regular");
+        out_.entries.resize(first + children.count());
+        out_.entries[entry] = uint32_t(first) << 4 | split;
+        out_.depth = std::max(out_.depth, level + 1);
         for (int z = 0; z < int(parts); ++z)
             for (int y = 0; y < int(parts); ++y)
                 for (int x = 0; x < int(parts); ++x) {
@@ -130,9 +145,7 @@ private:
         return s;
     }
 
-    // Cells and entries at most ~64 per primitive (and a floor for small scenes): a safety net
-    // on memory and build time, far above what the cost model asks for.
-    bool budgetSpent() const { return grid_.entries.size() + grid_.cellBoxes.size() > budget_; }
+    bool budgetSpent() const { return out_.entries.size() + out_.cellBoxes.size() > budget_; }
 
     // Parts per axis, as a power of two: about density cells per primitive held (a split into
     // 8^d cells), none for a cell with few primitives or no levels left.
@@ -145,25 +158,51 @@ private:
 
     void makeLeaf(uint32_t entry, glm::ivec3 min, glm::ivec3 max,
                   const std::vector<uint32_t> &refs) {
-        size_t cell = grid_.cellBoxes.size();
+        size_t cell = out_.cellBoxes.size();
         if (cell >= kMaxIndex)
-            throw Error("adaptive grid needs more than 2^28 cells; use --grid auto");
-        if (grid_.cellPrimitives.size() + refs.size() >= uint64_t(UINT32_MAX))
-            throw Error("grid holds more than 2^32 primitive references; use --grid auto");
-        grid_.entries[entry] = uint32_t(cell) << 4;
-        grid_.cellBoxes.push_back(packCellBox(min, max));
-        grid_.cellPrimitives.insert(grid_.cellPrimitives.end(), refs.begin(), refs.end());
-        grid_.cellStart.push_back(uint32_t(grid_.cellPrimitives.size()));
-        grid_.maxPerCell = std::max(grid_.maxPerCell, uint32_t(refs.size()));
+            throw Error("adaptive grid needs more than 2^28 cells; use --grid regular");
+        out_.entries[entry] = uint32_t(cell) << 4;
+        out_.cellBoxes.push_back(packCellBox(min, max));
+        out_.cellCounts.push_back(uint32_t(refs.size()));
+        out_.cellPrimitives.insert(out_.cellPrimitives.end(), refs.begin(), refs.end());
+        out_.maxPerCell = std::max(out_.maxPerCell, uint32_t(refs.size()));
     }
 
-    Grid &grid_;
+    Fragment &out_;
+    const Grid &grid_;
     const FinitePrimitives &primitives_;
     double density_;
     double magnitude_;
     glm::dvec3 voxelSize_;
-    size_t budget_ = 64 * size_t(primitives_.count()) + (size_t(1) << 20);
+    size_t budget_;
 };
+
+// Appends a top cell's fragment to the grid, renumbering its entries and cells.
+void join(Grid &grid, uint32_t topCell, const Fragment &f) {
+    uint64_t entryBase = grid.entries.size(), cellBase = grid.cellBoxes.size();
+    if (entryBase + f.entries.size() > kMaxIndex)
+        throw Error("adaptive grid needs more than 2^28 voxel-map entries; use --grid regular");
+    if (cellBase + f.cellBoxes.size() > kMaxIndex)
+        throw Error("adaptive grid needs more than 2^28 cells; use --grid regular");
+    if (grid.cellPrimitives.size() + f.cellPrimitives.size() >= uint64_t(UINT32_MAX))
+        throw Error("grid holds more than 2^32 primitive references; use --grid regular");
+    auto renumber = [&](uint32_t entry) {
+        uint32_t split = entry & 15u, target = entry >> 4;
+        // Entry 0 is the top cell's own; the fragment's entry j > 0 lands at entryBase + j - 1.
+        target = split != 0 ? uint32_t(entryBase) + target - 1 : uint32_t(cellBase) + target;
+        return target << 4 | split;
+    };
+    grid.entries[topCell] = renumber(f.entries[0]);
+    for (size_t j = 1; j < f.entries.size(); ++j)
+        grid.entries.push_back(renumber(f.entries[j]));
+    grid.cellBoxes.insert(grid.cellBoxes.end(), f.cellBoxes.begin(), f.cellBoxes.end());
+    for (uint32_t count : f.cellCounts)
+        grid.cellStart.push_back(grid.cellStart.back() + count);
+    grid.cellPrimitives.insert(grid.cellPrimitives.end(), f.cellPrimitives.begin(),
+                               f.cellPrimitives.end());
+    grid.depth = std::max(grid.depth, f.depth);
+    grid.maxPerCell = std::max(grid.maxPerCell, f.maxPerCell);
+}
 
 } // namespace
 
@@ -180,17 +219,25 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives,
         topRefs[cell].push_back(id); // ids ascending within a cell: binned in id order
     pairs = {};
 
+    // Cells and entries at most ~64 per primitive a top cell holds (and a floor for small
+    // cells): a safety net on memory and build time, far above what the cost model asks for.
+    std::vector<Fragment> fragments(top.count());
+    parallelFor(top.count(), [&](size_t t) {
+        glm::ivec3 cell(int(t % uint32_t(grid.resolution.x)),
+                        int(t / uint32_t(grid.resolution.x) % uint32_t(grid.resolution.y)),
+                        int(t / (uint64_t(grid.resolution.x) * uint32_t(grid.resolution.y))));
+        size_t budget = 64 * topRefs[t].size() + 4096;
+        Splitter splitter(fragments[t], grid, primitives, double(options.density), top.magnitude,
+                          budget);
+        splitter.build(0, cell << int(grid.shift), grid.shift, 0, 0, std::move(topRefs[t]));
+    });
     grid.entries.assign(top.count(), 0u);
     grid.cellStart = {0u};
     grid.depth = 0;
-    Splitter splitter(grid, primitives, double(options.density), top.magnitude);
-    for (int z = 0; z < grid.resolution.z; ++z)
-        for (int y = 0; y < grid.resolution.y; ++y)
-            for (int x = 0; x < grid.resolution.x; ++x) {
-                uint32_t t = grid.cellIndex({x, y, z});
-                splitter.build(t, glm::ivec3(x, y, z) << int(grid.shift), grid.shift, 0, 0,
-                               std::move(topRefs[t]));
-            }
+    for (uint32_t t = 0; t < top.count(); ++t) {
+        join(grid, t, fragments[t]);
+        fragments[t] = {}; // free as we go
+    }
     expandCells(grid);
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/parallel_for.h"
+
 namespace prism {
 namespace {
 
@@ -52,63 +54,73 @@ void forEachCellIn(const Grid &grid, glm::ivec3 lo, glm::ivec3 hi, Visit visit) 
     MapQuery<Visit>(grid, lo, hi, visit).run();
 }
 
+// Cell `cell`'s box after expansion; reads only the grid as built.
+glm::uvec4 expandedBox(const Grid &grid, uint32_t cell) {
+    glm::ivec3 resolution = grid.voxelResolution();
+    auto refs = [&](uint32_t c) {
+        return std::make_pair(grid.cellPrimitives.begin() + grid.cellStart[c],
+                              grid.cellPrimitives.begin() + grid.cellStart[c + 1]);
+    };
+    glm::ivec3 lo, hi;
+    unpackCellBox(grid.cellBoxes[cell], lo, hi);
+    auto [first, last] = refs(cell);
+    for (int round = 0; round < kExpansionRounds; ++round) {
+        bool grew = false;
+        for (int face = 0; face < 6; ++face) {
+            int axis = face / 2;
+            bool up = face % 2 == 0;
+            if (up ? hi[axis] >= resolution[axis] : lo[axis] <= 0)
+                continue;
+            // The one-voxel layer just past the face: the cells it touches must each be
+            // listed in full here; the layer grows to the thinnest of them.
+            glm::ivec3 layerLo = lo, layerHi = hi;
+            if (up) {
+                layerLo[axis] = hi[axis];
+                layerHi[axis] = hi[axis] + 1;
+            } else {
+                layerLo[axis] = lo[axis] - 1;
+                layerHi[axis] = lo[axis];
+            }
+            bool allowed = true;
+            int step = resolution[axis];
+            forEachCellIn(grid, layerLo, layerHi, [&](uint32_t neighbour) {
+                if (!allowed)
+                    return;
+                auto [nFirst, nLast] = refs(neighbour);
+                if (!std::includes(first, last, nFirst, nLast)) {
+                    allowed = false;
+                    return;
+                }
+                glm::ivec3 nLo, nHi;
+                unpackCellBox(grid.cellBoxes[neighbour], nLo, nHi);
+                step = std::min(step, up ? nHi[axis] - hi[axis] : lo[axis] - nLo[axis]);
+            });
+            if (!allowed || step <= 0)
+                continue;
+            if (up)
+                hi[axis] += step;
+            else
+                lo[axis] -= step;
+            grew = true;
+        }
+        if (!grew)
+            break;
+    }
+    return packCellBox(lo, hi);
+}
+
 } // namespace
 
 void expandCells(Grid &grid) {
-    glm::ivec3 resolution = grid.voxelResolution();
-    std::vector<glm::uvec4> grown = grid.cellBoxes;
-    auto refs = [&](uint32_t cell) {
-        return std::make_pair(grid.cellPrimitives.begin() + grid.cellStart[cell],
-                              grid.cellPrimitives.begin() + grid.cellStart[cell + 1]);
-    };
-    for (uint32_t cell = 0; cell < grid.cellBoxes.size(); ++cell) {
-        glm::ivec3 lo, hi;
-        unpackCellBox(grown[cell], lo, hi);
-        auto [first, last] = refs(cell);
-        for (int round = 0; round < kExpansionRounds; ++round) {
-            bool grew = false;
-            for (int face = 0; face < 6; ++face) {
-                int axis = face / 2;
-                bool up = face % 2 == 0;
-                if (up ? hi[axis] >= resolution[axis] : lo[axis] <= 0)
-                    continue;
-                // The one-voxel layer just past the face: the cells it touches must each be
-                // listed in full here; the layer grows to the thinnest of them.
-                glm::ivec3 layerLo = lo, layerHi = hi;
-                if (up) {
-                    layerLo[axis] = hi[axis];
-                    layerHi[axis] = hi[axis] + 1;
-                } else {
-                    layerLo[axis] = lo[axis] - 1;
-                    layerHi[axis] = lo[axis];
-                }
-                bool allowed = true;
-                int step = resolution[axis];
-                forEachCellIn(grid, layerLo, layerHi, [&](uint32_t neighbour) {
-                    if (!allowed)
-                        return;
-                    auto [nFirst, nLast] = refs(neighbour);
-                    if (!std::includes(first, last, nFirst, nLast)) {
-                        allowed = false;
-                        return;
-                    }
-                    glm::ivec3 nLo, nHi;
-                    unpackCellBox(grid.cellBoxes[neighbour], nLo, nHi);
-                    step = std::min(step, up ? nHi[axis] - hi[axis] : lo[axis] - nLo[axis]);
-                });
-                if (!allowed || step <= 0)
-                    continue;
-                if (up)
-                    hi[axis] += step;
-                else
-                    lo[axis] -= step;
-                grew = true;
-            }
-            if (!grew)
-                break;
-        }
-        grown[cell] = packCellBox(lo, hi);
-    }
+    // Each cell reads the grid as built and writes only its own box: cells expand in parallel,
+    // in blocks of kBlock, with the same result on every run.
+    constexpr size_t kBlock = 256;
+    size_t cells = grid.cellBoxes.size();
+    std::vector<glm::uvec4> grown(cells);
+    parallelFor((cells + kBlock - 1) / kBlock, [&](size_t block) {
+        for (size_t cell = block * kBlock; cell < std::min(cells, (block + 1) * kBlock); ++cell)
+            grown[cell] = expandedBox(grid, uint32_t(cell));
+    });
     grid.cellBoxes = std::move(grown);
 }
 

@@ -8,11 +8,17 @@ namespace {
 
 // The lattice of rays is 4:3; the render's own size is not known when the grid is built.
 constexpr double kChoiceAspect = 4.0 / 3.0;
+constexpr int kChoiceColumns = 48;
+
+// Counting the regular grid stops here: far above any cost the adaptive grid has shown, so
+// the choice is already clear (the teapot in the stadium would count 6,320 tests a ray).
+constexpr double kStopCountingAbove = 200.0;
 
 std::string describe(const char *name, const WalkCounts &counts, double cost) {
     char text[160];
-    std::snprintf(text, sizeof text, "%s %.1f (%.2f cells, %.2f tests a ray)", name, cost,
-                  counts.cellsPerRay, counts.testsPerRay);
+    const char *atLeast = counts.stopped ? ">= " : "";
+    std::snprintf(text, sizeof text, "%s %s%.1f (%s%.2f cells, %s%.2f tests a ray)", name, atLeast,
+                  cost, atLeast, counts.cellsPerRay, atLeast, counts.testsPerRay);
     return text;
 }
 
@@ -29,7 +35,8 @@ Grid chooseGrid(const Scene &scene, const std::function<Grid(GridOptions::Mode)>
         regular.choice = "regular (nothing to grid)";
         return regular;
     }
-    WalkCounts regularCounts = countWalks(scene, regular, kChoiceAspect);
+    WalkCounts regularCounts =
+        countWalks(scene, regular, kChoiceAspect, kChoiceColumns, kStopCountingAbove);
     double regularCost = walkCost(regularCounts, false);
     std::string regularText = describe("regular", regularCounts, regularCost);
     if (regularCost < kConsiderAdaptiveCost) {
@@ -37,7 +44,7 @@ Grid chooseGrid(const Scene &scene, const std::function<Grid(GridOptions::Mode)>
         return regular;
     }
     Grid adaptive = build(GridOptions::Mode::Adaptive);
-    WalkCounts adaptiveCounts = countWalks(scene, adaptive, kChoiceAspect);
+    WalkCounts adaptiveCounts = countWalks(scene, adaptive, kChoiceAspect, kChoiceColumns);
     double adaptiveCost = walkCost(adaptiveCounts, true);
     std::string both =
         describe("adaptive", adaptiveCounts, adaptiveCost) + " against " + regularText;

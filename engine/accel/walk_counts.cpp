@@ -28,15 +28,17 @@ bool intersectId(const Scene &scene, const PrimitiveIds &ids, uint32_t id, const
 
 } // namespace
 
-WalkCounts countWalks(const Scene &scene, const Grid &grid, double aspect, int columns) {
+WalkCounts countWalks(const Scene &scene, const Grid &grid, double aspect, int columns,
+                      double stopAboveTestsPerRay) {
     PrimitiveIds ids(scene);
     // A frame of the lattice's own size: its pixel centres are the rays.
     int width = columns, height = std::max(1, int(double(columns) / aspect + 0.5));
     CameraFrame frame = makeCameraFrame(scene.camera, width, height);
     WalkCounts counts;
     uint64_t cells = 0, tests = 0;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
+    double stopAbove = stopAboveTestsPerRay * double(width) * double(height);
+    for (int y = 0; y < height && !counts.stopped; ++y)
+        for (int x = 0; x < width && !counts.stopped; ++x) {
             Ray ray = cameraRay(frame, glm::dvec2(x + 0.5, y + 0.5));
             reference::WatertightRay wray = reference::makeWatertightRay(ray.dir);
             double nearest = std::numeric_limits<double>::infinity();
@@ -51,9 +53,12 @@ WalkCounts countWalks(const Scene &scene, const Grid &grid, double aspect, int c
                 return nearest > tExit; // on until the nearest hit is in a cell reached
             });
             ++counts.rays;
+            counts.stopped = double(tests) > stopAbove;
         }
-    counts.cellsPerRay = double(cells) / counts.rays;
-    counts.testsPerRay = double(tests) / counts.rays;
+    // Per ray of the whole lattice: where counting stopped, the rays not walked count zero.
+    double rays = double(width) * double(height);
+    counts.cellsPerRay = double(cells) / rays;
+    counts.testsPerRay = double(tests) / rays;
     return counts;
 }
 

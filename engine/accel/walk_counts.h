@@ -3,6 +3,8 @@
 // walks the grid as the shader does (accel/grid_walk.h), testing each cell's primitives until
 // the nearest hit lies in the cell reached. The counts are the tracer's work per ray, exactly,
 // for those rays; --stats reports them, and `--grid auto` compares grids with them.
+#include <limits>
+
 #include "accel/grid.h"
 #include "scene/scene.h"
 
@@ -12,9 +14,15 @@ struct WalkCounts {
     uint32_t rays = 0;
     double cellsPerRay = 0.0; // cells visited
     double testsPerRay = 0.0; // primitive tests
+    // Counting stopped early (see countWalks): the figures are lower bounds.
+    bool stopped = false;
 };
 
 // Rays through the pixel centres of a `columns` wide image of the given aspect (width / height).
-WalkCounts countWalks(const Scene &scene, const Grid &grid, double aspect, int columns = 48);
+// Stops as soon as the tests counted exceed stopAboveTestsPerRay for every ray of the lattice:
+// a grid that crowds the camera's rays costs seconds to count in full, and a lower bound is
+// all a comparison needs.
+WalkCounts countWalks(const Scene &scene, const Grid &grid, double aspect, int columns = 48,
+                      double stopAboveTestsPerRay = std::numeric_limits<double>::infinity());
 
 } // namespace prism

@@ -38,6 +38,21 @@ TEST(WalkCounts, CountWhatTheWalkTests) {
     EXPECT_LT(adaptive.testsPerRay, brute.testsPerRay / 20.0);
 }
 
+// Counting that stops early gives lower bounds, which is all the choice needs from a grid that
+// crowds the camera's rays (and counting such a grid in full takes seconds).
+TEST(WalkCounts, StoppingEarlyGivesLowerBounds) {
+    Scene scene = clusterSeenFromClose();
+    Grid off = buildGrid(scene, parseGridOption("off"));
+    WalkCounts full = countWalks(scene, off, 4.0 / 3.0, 16);
+    WalkCounts stopped = countWalks(scene, off, 4.0 / 3.0, 16, 100.0);
+    EXPECT_FALSE(full.stopped);
+    EXPECT_TRUE(stopped.stopped);
+    EXPECT_LT(stopped.rays, full.rays);
+    EXPECT_GT(stopped.testsPerRay, 100.0);
+    EXPECT_LE(stopped.testsPerRay, full.testsPerRay);
+    EXPECT_LE(stopped.cellsPerRay, full.cellsPerRay);
+}
+
 TEST(GridChoice, EvenScenesKeepTheRegularGrid) {
     Scene scene = evenSpheres();
     Grid g = buildGrid(scene);

@@ -1,0 +1,49 @@
+#pragma once
+// Runs body(i) for every i in [0, count) on all cores. Each index runs exactly once; which
+// thread runs it varies, so a body must write only what index i owns for the result to be the
+// same on every run. The first exception a body throws is rethrown here, after every thread
+// has stopped.
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace prism {
+
+template <typename Body> void parallelFor(size_t count, Body body) {
+    size_t threads = std::min<size_t>(count, std::max(1u, std::thread::hardware_concurrency()));
+    if (threads <= 1) {
+        for (size_t i = 0; i < count; ++i)
+            body(i);
+        return;
+    }
+    std::atomic<size_t> next{0};
+    std::atomic<bool> failed{false};
+    std::exception_ptr error;
+    std::mutex errorMutex;
+    auto work = [&] {
+        for (size_t i = next++; i < count && !failed; i = next++) {
+            try {
+                body(i);
+            } catch (...) {
+                std::lock_guard lock(errorMutex);
+                if (!error)
+                    error = std::current_exception();
+                failed = true;
+            }
+        }
+    };
+    std::vector<std::thread> pool;
+    for (size_t t = 1; t < threads; ++t)
+        pool.emplace_back(work);
+    work();
+    for (std::thread &t : pool)
+        t.join();
+    if (error)
+        std::rethrow_exception(error);
+}
+
+} // namespace prism
