@@ -18,6 +18,8 @@ namespace {
 constexpr uint32_t kMaxIndex = 1u << 28; // entries keep 4 bits for the split
 // What a step to the next cell costs against one primitive test, for the split decision.
 constexpr double kStepCost = 1.0;
+// Splits in a row that leave some part with all the cell's primitives (see build).
+constexpr uint32_t kMaxIdleSplits = 3;
 
 // Voxels per top cell and axis: as fine as 16-bit voxel coordinates allow, at most what the
 // levels can split.
@@ -57,7 +59,7 @@ public:
         uint32_t n = uint32_t(refs.size());
         uint32_t split = chooseSplit(n, sizeShift, level);
         if (split == 0) {
-            makeLeaf(entry, voxelMin, voxelMin + glm::ivec3(1 << sizeShift), refs);
+            makeLeaf(entry, voxelMin, sizeShift, refs);
             return;
         }
         // Surface area heuristic (MacDonald & Booth 1990) for a uniform split: a ray through
@@ -65,34 +67,48 @@ public:
         // and meets each part with probability area(part) / area(cell) = 1 / parts^2. Where
         // primitives are large against the parts (overlapping spheres) a split only copies
         // references. The split the density asks for and each coarser one are priced; the
-        // cheapest is made if it beats not splitting.
-        Split best;
+        // cheapest is made if it beats not splitting. Counts here go by bounding boxes (a
+        // superset of what each part will list): exact tests are left to the leaves, where
+        // they are needed, instead of being repeated at every level and candidate.
+        uint32_t best = 0;
         double bestCost = double(n);
         for (uint32_t d = split; d >= 1; --d) {
-            Split candidate = splitInto(refs, voxelMin, sizeShift, d);
             double parts = double(1u << d);
-            double cost = kStepCost * 1.5 * parts + double(candidate.references) / (parts * parts);
+            double cost = kStepCost * 1.5 * parts +
+                          double(referencesAfter(refs, voxelMin, sizeShift, d)) / (parts * parts);
             if (cost < bestCost) {
                 bestCost = cost;
-                best = std::move(candidate);
+                best = d;
             }
         }
-        if (best.split == 0 || budgetSpent()) {
-            makeLeaf(entry, voxelMin, voxelMin + glm::ivec3(1 << sizeShift), refs);
+        if (best == 0 || budgetSpent()) {
+            makeLeaf(entry, voxelMin, sizeShift, refs);
             return;
         }
-        split = best.split;
+        split = best;
         uint32_t childShift = sizeShift - split, parts = 1u << split;
-        Lattice &children = best.children;
-        std::vector<std::vector<uint32_t>> &childRefs = best.childRefs;
-        size_t fullest = best.fullest;
-        // A split that leaves some part with every primitive may still help one level down (a
-        // small cluster in a big cell), but two in a row mean the primitives cannot be told
+        Lattice children = childLattice(voxelMin, sizeShift, split);
+        std::vector<std::vector<uint32_t>> childRefs(children.count());
+        size_t fullest = 0;
+        CellBinner binner(children);
+        for (uint32_t id : refs) {
+            glm::ivec3 lo, hi;
+            binner.boundsRange(primitives_.bounds(id), lo, hi);
+            for (int z = lo.z; z <= hi.z; ++z)
+                for (int y = lo.y; y <= hi.y; ++y)
+                    for (int x = lo.x; x <= hi.x; ++x) {
+                        std::vector<uint32_t> &list = childRefs[children.local({x, y, z})];
+                        list.push_back(id);
+                        fullest = std::max(fullest, list.size());
+                    }
+        }
+        // A split that leaves some part with every primitive may still help further down (a
+        // small cluster in a big cell), but three in a row mean the primitives cannot be told
         // apart (all in one point, a fan around one vertex): the cell stays whole. This also
-        // bounds the work such scenes cost.
+        // bounds the work and the empty cells such scenes cost.
         idleSplits = fullest >= n ? idleSplits + 1 : 0;
-        if (idleSplits >= 2) {
-            makeLeaf(entry, voxelMin, voxelMin + glm::ivec3(1 << sizeShift), refs);
+        if (idleSplits >= kMaxIdleSplits) {
+            makeLeaf(entry, voxelMin, sizeShift, refs);
             return;
         }
         refs = {}; // free before going down
@@ -114,35 +130,30 @@ public:
     }
 
 private:
-    struct Split {
-        uint32_t split = 0; // parts per axis: 2^split; 0: none
-        Lattice children;
-        std::vector<std::vector<uint32_t>> childRefs;
-        size_t references = 0; // over all parts
-        size_t fullest = 0;
-    };
-
-    Split splitInto(const std::vector<uint32_t> &refs, glm::ivec3 voxelMin, uint32_t sizeShift,
-                    uint32_t split) const {
-        Split s;
-        s.split = split;
+    // The 2^split parts per axis of the cell of 2^sizeShift voxels from voxelMin.
+    Lattice childLattice(glm::ivec3 voxelMin, uint32_t sizeShift, uint32_t split) const {
         uint32_t childShift = sizeShift - split;
-        s.children.origin = glm::dvec3(grid_.boundsMin);
-        s.children.cellSize = voxelSize_ * double(1u << childShift);
-        s.children.lo = voxelMin >> int(childShift);
-        s.children.hi = s.children.lo + glm::ivec3(1 << split);
-        s.children.magnitude = magnitude_;
-        std::vector<std::pair<uint32_t, uint32_t>> pairs;
-        CellBinner binner(s.children);
-        for (uint32_t id : refs)
-            binner.bin(id, primitives_, pairs);
-        s.childRefs.resize(s.children.count());
-        for (const auto &[child, id] : pairs) {
-            s.childRefs[child].push_back(id);
-            s.fullest = std::max(s.fullest, s.childRefs[child].size());
+        Lattice l;
+        l.origin = glm::dvec3(grid_.boundsMin);
+        l.cellSize = voxelSize_ * double(1u << childShift);
+        l.lo = voxelMin >> int(childShift);
+        l.hi = l.lo + glm::ivec3(1 << split);
+        l.magnitude = magnitude_;
+        return l;
+    }
+
+    // References over all parts of a split, by bounding box.
+    size_t referencesAfter(const std::vector<uint32_t> &refs, glm::ivec3 voxelMin,
+                           uint32_t sizeShift, uint32_t split) const {
+        CellBinner binner(childLattice(voxelMin, sizeShift, split));
+        size_t references = 0;
+        for (uint32_t id : refs) {
+            glm::ivec3 lo, hi;
+            binner.boundsRange(primitives_.bounds(id), lo, hi);
+            glm::ivec3 span = hi - lo + 1;
+            references += size_t(span.x) * size_t(span.y) * size_t(span.z);
         }
-        s.references = pairs.size();
-        return s;
+        return references;
     }
 
     bool budgetSpent() const { return out_.entries.size() + out_.cellBoxes.size() > budget_; }
@@ -156,16 +167,25 @@ private:
         return uint32_t(std::clamp(d, 1.0, double(std::min(kAdaptiveMaxSplit, sizeShift))));
     }
 
-    void makeLeaf(uint32_t entry, glm::ivec3 min, glm::ivec3 max,
+    // The cell of 2^sizeShift voxels from voxelMin, listing exactly the `refs` that overlap it
+    // (refs came down by bounding box: a superset).
+    void makeLeaf(uint32_t entry, glm::ivec3 voxelMin, uint32_t sizeShift,
                   const std::vector<uint32_t> &refs) {
         size_t cell = out_.cellBoxes.size();
         if (cell >= kMaxIndex)
             throw Error("adaptive grid needs more than 2^28 cells; use --grid regular");
+        Lattice self = childLattice(voxelMin, sizeShift, 0);
+        CellBinner binner(self);
+        uint32_t count = 0;
+        for (uint32_t id : refs)
+            if (binner.overlaps(id, primitives_, self.lo)) {
+                out_.cellPrimitives.push_back(id);
+                ++count;
+            }
         out_.entries[entry] = uint32_t(cell) << 4;
-        out_.cellBoxes.push_back(packCellBox(min, max));
-        out_.cellCounts.push_back(uint32_t(refs.size()));
-        out_.cellPrimitives.insert(out_.cellPrimitives.end(), refs.begin(), refs.end());
-        out_.maxPerCell = std::max(out_.maxPerCell, uint32_t(refs.size()));
+        out_.cellBoxes.push_back(packCellBox(voxelMin, voxelMin + glm::ivec3(1 << sizeShift)));
+        out_.cellCounts.push_back(count);
+        out_.maxPerCell = std::max(out_.maxPerCell, count);
     }
 
     Fragment &out_;
@@ -210,14 +230,17 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives,
                         const GridOptions &options) {
     grid.shift = chooseShift(grid.resolution);
     Lattice top = wholeGrid(grid);
-    std::vector<std::pair<uint32_t, uint32_t>> pairs;
+    // By bounding box, as every level above the leaves (Splitter::build).
     CellBinner binner(top);
-    for (uint32_t id = 0; id < primitives.count(); ++id)
-        binner.bin(id, primitives, pairs);
     std::vector<std::vector<uint32_t>> topRefs(top.count());
-    for (const auto &[cell, id] : pairs)
-        topRefs[cell].push_back(id); // ids ascending within a cell: binned in id order
-    pairs = {};
+    for (uint32_t id = 0; id < primitives.count(); ++id) {
+        glm::ivec3 lo, hi;
+        binner.boundsRange(primitives.bounds(id), lo, hi);
+        for (int z = lo.z; z <= hi.z; ++z)
+            for (int y = lo.y; y <= hi.y; ++y)
+                for (int x = lo.x; x <= hi.x; ++x)
+                    topRefs[top.local({x, y, z})].push_back(id); // ids ascending in a cell
+    }
 
     // Cells and entries at most ~64 per primitive a top cell holds (and a floor for small
     // cells): a safety net on memory and build time, far above what the cost model asks for.

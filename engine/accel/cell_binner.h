@@ -44,16 +44,27 @@ public:
     // Appends (local cell, id) for every cell of the window that primitive `id` overlaps.
     void bin(uint32_t id, const FinitePrimitives &primitives,
              std::vector<std::pair<uint32_t, uint32_t>> &pairs) const {
-        Aabb bounds = primitives.bounds(id);
-        glm::ivec3 lo = cellOf(bounds.min - slack_), hi = cellOf(bounds.max + slack_);
+        glm::ivec3 lo, hi;
+        boundsRange(primitives.bounds(id), lo, hi);
         for (int z = lo.z; z <= hi.z; ++z)
             for (int y = lo.y; y <= hi.y; ++y)
-                for (int x = lo.x; x <= hi.x; ++x) {
-                    glm::dvec3 cmin = lattice_.origin + glm::dvec3(x, y, z) * lattice_.cellSize;
-                    glm::dvec3 cmax = cmin + lattice_.cellSize;
-                    if (primitives.overlapsBox(id, cmin - slack_, cmax + slack_))
+                for (int x = lo.x; x <= hi.x; ++x)
+                    if (overlaps(id, primitives, {x, y, z}))
                         pairs.emplace_back(lattice_.local({x, y, z}), id);
-                }
+    }
+
+    // The cells [lo, hi] (inclusive) of the window that `bounds`, grown by the slack, overlaps:
+    // every cell a primitive with those bounds overlaps, and perhaps some more.
+    void boundsRange(const Aabb &bounds, glm::ivec3 &lo, glm::ivec3 &hi) const {
+        lo = cellOf(bounds.min - slack_);
+        hi = cellOf(bounds.max + slack_);
+    }
+
+    // Primitive `id` against one cell (grown by the slack), exactly.
+    bool overlaps(uint32_t id, const FinitePrimitives &primitives, glm::ivec3 cell) const {
+        glm::dvec3 cmin = lattice_.origin + glm::dvec3(cell) * lattice_.cellSize;
+        glm::dvec3 cmax = cmin + lattice_.cellSize;
+        return primitives.overlapsBox(id, cmin - slack_, cmax + slack_);
     }
 
 private:

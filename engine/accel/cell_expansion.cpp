@@ -8,30 +8,32 @@
 namespace prism {
 namespace {
 
-// Calls visit(cell) for every cell of the voxel map that overlaps the voxel box [lo, hi).
+// Calls visit(cell) for the cells of the voxel map that overlap the voxel box [lo, hi), until
+// one returns false. Returns whether all returned true. (A cell covering several entries of
+// the map may be visited more than once.)
 template <typename Visit> class MapQuery {
 public:
     MapQuery(const Grid &grid, glm::ivec3 lo, glm::ivec3 hi, Visit &visit)
         : grid_(grid), lo_(lo), hi_(hi), visit_(visit) {}
 
-    void run() {
+    bool run() {
         int shift = int(grid_.shift);
         glm::ivec3 first = lo_ >> shift, last = (hi_ - 1) >> shift;
         for (int z = first.z; z <= last.z; ++z)
             for (int y = first.y; y <= last.y; ++y)
                 for (int x = first.x; x <= last.x; ++x) {
                     glm::ivec3 top(x, y, z);
-                    descend(grid_.entries[grid_.cellIndex(top)], top << shift, shift);
+                    if (!descend(grid_.entries[grid_.cellIndex(top)], top << shift, shift))
+                        return false;
                 }
+        return true;
     }
 
 private:
-    void descend(uint32_t entry, glm::ivec3 nodeMin, int nodeShift) {
+    bool descend(uint32_t entry, glm::ivec3 nodeMin, int nodeShift) {
         int split = int(entry & 15u);
-        if (split == 0) {
-            visit_(entry >> 4);
-            return;
-        }
+        if (split == 0)
+            return visit_(entry >> 4);
         int childShift = nodeShift - split, parts = 1 << split;
         glm::ivec3 first = glm::max(lo_ - nodeMin, glm::ivec3(0)) >> childShift;
         glm::ivec3 last = glm::min((hi_ - 1 - nodeMin) >> childShift, glm::ivec3(parts - 1));
@@ -39,9 +41,11 @@ private:
             for (int y = first.y; y <= last.y; ++y)
                 for (int x = first.x; x <= last.x; ++x) {
                     uint32_t child = (entry >> 4) + uint32_t(x + (y << split) + (z << (2 * split)));
-                    descend(grid_.entries[child], nodeMin + (glm::ivec3(x, y, z) << childShift),
-                            childShift);
+                    if (!descend(grid_.entries[child],
+                                 nodeMin + (glm::ivec3(x, y, z) << childShift), childShift))
+                        return false;
                 }
+        return true;
     }
 
     const Grid &grid_;
@@ -50,8 +54,8 @@ private:
 };
 
 template <typename Visit>
-void forEachCellIn(const Grid &grid, glm::ivec3 lo, glm::ivec3 hi, Visit visit) {
-    MapQuery<Visit>(grid, lo, hi, visit).run();
+bool allCellsIn(const Grid &grid, glm::ivec3 lo, glm::ivec3 hi, Visit visit) {
+    return MapQuery<Visit>(grid, lo, hi, visit).run();
 }
 
 // Cell `cell`'s box after expansion; reads only the grid as built.
@@ -81,19 +85,15 @@ glm::uvec4 expandedBox(const Grid &grid, uint32_t cell) {
                 layerLo[axis] = lo[axis] - 1;
                 layerHi[axis] = lo[axis];
             }
-            bool allowed = true;
             int step = resolution[axis];
-            forEachCellIn(grid, layerLo, layerHi, [&](uint32_t neighbour) {
-                if (!allowed)
-                    return;
+            bool allowed = allCellsIn(grid, layerLo, layerHi, [&](uint32_t neighbour) {
                 auto [nFirst, nLast] = refs(neighbour);
-                if (!std::includes(first, last, nFirst, nLast)) {
-                    allowed = false;
-                    return;
-                }
+                if (nLast - nFirst > last - first || !std::includes(first, last, nFirst, nLast))
+                    return false;
                 glm::ivec3 nLo, nHi;
                 unpackCellBox(grid.cellBoxes[neighbour], nLo, nHi);
                 step = std::min(step, up ? nHi[axis] - hi[axis] : lo[axis] - nLo[axis]);
+                return true;
             });
             if (!allowed || step <= 0)
                 continue;

@@ -87,6 +87,16 @@ int runScenegen(int argc, char **argv) {
         ->default_val(lattice.radius);
     addOutput(latticeCmd);
 
+    ToriOptions tori;
+    CLI::App *toriCmd =
+        app.add_subcommand("tori", "A row of tessellated tori on a floor, any number of triangles: "
+                                   "per-ray cost against triangle count");
+    toriCmd
+        ->add_option("--triangles", tori.triangles, "Triangles in all, about (18 x count .. 2e7)")
+        ->default_val(tori.triangles);
+    toriCmd->add_option("--count", tori.count, "Number of tori (1..100)")->default_val(tori.count);
+    addOutput(toriCmd);
+
     CLI::App *mixedCmd = app.add_subcommand(
         "mixed", "Planes, spheres and triangle solids, 621 primitives (the original's scene)");
     addOutput(mixedCmd);
@@ -112,6 +122,8 @@ int runScenegen(int argc, char **argv) {
         text = randomScene(random, randomCommand(random));
     } else if (latticeCmd->parsed())
         text = latticeScene(lattice, latticeCommand(lattice));
+    else if (toriCmd->parsed())
+        text = toriScene(tori, toriCommand(tori));
     else if (mixedCmd->parsed())
         text = mixedScene("prism-scenegen mixed");
     else {

@@ -28,6 +28,15 @@ struct LatticeOptions {
 std::string latticeScene(const LatticeOptions &options, const std::string &command);
 std::string latticeCommand(const LatticeOptions &options);
 
+// A row of `count` standing tori, about `triangles` triangles in all, on a floor: the
+// same picture at any tessellation (per-ray cost against triangle count).
+struct ToriOptions {
+    uint32_t triangles = 100000;
+    uint32_t count = 5;
+};
+std::string toriScene(const ToriOptions &options, const std::string &command);
+std::string toriCommand(const ToriOptions &options);
+
 // The original's "scene" (planes, triangles and spheres: 621 primitives) and "objects"
 // (various triangle objects: 5436 triangles) benchmarks, laid out by hand in code.
 std::string mixedScene(const std::string &command);
