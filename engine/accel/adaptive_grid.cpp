@@ -119,13 +119,15 @@ public:
         out_.entries.resize(first + children.count());
         out_.entries[entry] = uint32_t(first) << 4 | split;
         out_.depth = std::max(out_.depth, level + 1);
+        mergeEmptyParts(uint32_t(first), children, childShift, childRefs);
         for (int z = 0; z < int(parts); ++z)
             for (int y = 0; y < int(parts); ++y)
                 for (int x = 0; x < int(parts); ++x) {
                     glm::ivec3 cell = children.lo + glm::ivec3(x, y, z);
                     uint32_t local = children.local(cell);
-                    build(uint32_t(first) + local, cell << int(childShift), childShift, level + 1,
-                          idleSplits, std::move(childRefs[local]));
+                    if (!childRefs[local].empty())
+                        build(uint32_t(first) + local, cell << int(childShift), childShift,
+                              level + 1, idleSplits, std::move(childRefs[local]));
                 }
     }
 
@@ -171,9 +173,6 @@ private:
     // (refs came down by bounding box: a superset).
     void makeLeaf(uint32_t entry, glm::ivec3 voxelMin, uint32_t sizeShift,
                   const std::vector<uint32_t> &refs) {
-        size_t cell = out_.cellBoxes.size();
-        if (cell >= kMaxIndex)
-            throw Error("adaptive grid needs more than 2^28 cells; use --grid regular");
         Lattice self = childLattice(voxelMin, sizeShift, 0);
         CellBinner binner(self);
         uint32_t count = 0;
@@ -182,10 +181,67 @@ private:
                 out_.cellPrimitives.push_back(id);
                 ++count;
             }
+        size_t cell = newCell(voxelMin, voxelMin + glm::ivec3(1 << sizeShift), count);
         out_.entries[entry] = uint32_t(cell) << 4;
-        out_.cellBoxes.push_back(packCellBox(voxelMin, voxelMin + glm::ivec3(1 << sizeShift)));
+    }
+
+    // Makes the empty parts of a split into few cells: from each empty part not yet taken, in
+    // x-fastest order, a box grows along x, then y, then z over empty parts not yet taken, and
+    // becomes one cell whose entries all point to it (the merge of Pérard-Gayot et al. for the
+    // commonest case). Surfaces leave most parts of a split empty; one cell per part made most
+    // of the adaptive grid's cells, memory and expansion work.
+    void mergeEmptyParts(uint32_t first, const Lattice &parts, uint32_t childShift,
+                         const std::vector<std::vector<uint32_t>> &childRefs) {
+        glm::ivec3 size = parts.size();
+        std::vector<bool> taken(childRefs.size());
+        auto free = [&](glm::ivec3 c) {
+            uint32_t i = uint32_t(c.x + size.x * (c.y + size.y * c.z));
+            return childRefs[i].empty() && !taken[i];
+        };
+        auto freeBox = [&](glm::ivec3 lo, glm::ivec3 hi) {
+            for (int z = lo.z; z < hi.z; ++z)
+                for (int y = lo.y; y < hi.y; ++y)
+                    for (int x = lo.x; x < hi.x; ++x)
+                        if (!free({x, y, z}))
+                            return false;
+            return true;
+        };
+        for (int z = 0; z < size.z; ++z)
+            for (int y = 0; y < size.y; ++y)
+                for (int x = 0; x < size.x; ++x) {
+                    glm::ivec3 lo(x, y, z), hi = lo + 1;
+                    if (!free(lo))
+                        continue;
+                    for (int axis = 0; axis < 3; ++axis)
+                        for (;;) {
+                            glm::ivec3 layerLo = lo, layerHi = hi;
+                            layerLo[axis] = hi[axis];
+                            layerHi[axis] = hi[axis] + 1;
+                            if (hi[axis] >= size[axis] || !freeBox(layerLo, layerHi))
+                                break;
+                            ++hi[axis];
+                        }
+                    size_t cell = newCell((parts.lo + lo) << int(childShift),
+                                          (parts.lo + hi) << int(childShift), 0);
+                    for (int cz = lo.z; cz < hi.z; ++cz)
+                        for (int cy = lo.y; cy < hi.y; ++cy)
+                            for (int cx = lo.x; cx < hi.x; ++cx) {
+                                uint32_t i = uint32_t(cx + size.x * (cy + size.y * cz));
+                                taken[i] = true;
+                                out_.entries[first + i] = uint32_t(cell) << 4;
+                            }
+                }
+    }
+
+    // Appends a cell with the given box whose `count` primitives the caller appends.
+    size_t newCell(glm::ivec3 boxMin, glm::ivec3 boxMax, uint32_t count) {
+        size_t cell = out_.cellBoxes.size();
+        if (cell >= kMaxIndex)
+            throw Error("adaptive grid needs more than 2^28 cells; use --grid regular");
+        out_.cellBoxes.push_back(packCellBox(boxMin, boxMax));
         out_.cellCounts.push_back(count);
         out_.maxPerCell = std::max(out_.maxPerCell, count);
+        return cell;
     }
 
     Fragment &out_;

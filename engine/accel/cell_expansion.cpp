@@ -86,7 +86,11 @@ glm::uvec4 expandedBox(const Grid &grid, uint32_t cell) {
                 layerHi[axis] = lo[axis];
             }
             int step = resolution[axis];
+            uint32_t previous = ~0u; // a merged cell comes up once for each of its map entries
             bool allowed = allCellsIn(grid, layerLo, layerHi, [&](uint32_t neighbour) {
+                if (neighbour == previous)
+                    return true;
+                previous = neighbour;
                 auto [nFirst, nLast] = refs(neighbour);
                 if (nLast - nFirst > last - first || !std::includes(first, last, nFirst, nLast))
                     return false;

@@ -50,6 +50,31 @@ TEST(AdaptiveGrid, BoxesLieInTheGridAndTheMapFindsThem) {
     expectWellFormed(adaptive(test::clusterInARoom(42, 2000, 100)));
 }
 
+// The empty parts of a split become few cells, each the box of the map entries that point to
+// it; only empty cells are shared by entries.
+TEST(AdaptiveGrid, EmptyPartsOfASplitAreMerged) {
+    Grid g = adaptive(test::clusterInARoom(44, 2000, 100));
+    expectWellFormed(g);
+    std::vector<uint32_t> entriesOf(g.cellBoxes.size(), 0);
+    size_t leaves = 0;
+    for (uint32_t entry : g.entries)
+        if ((entry & 15u) == 0) {
+            ++entriesOf[entry >> 4];
+            ++leaves;
+        }
+    size_t shared = 0;
+    for (uint32_t c = 0; c < g.cellBoxes.size(); ++c) {
+        EXPECT_GE(entriesOf[c], 1u) << "every cell is in the map";
+        if (entriesOf[c] > 1) {
+            ++shared;
+            EXPECT_EQ(g.cellStart[c + 1], g.cellStart[c]) << "only empty cells are merged";
+        }
+    }
+    EXPECT_GT(shared, 0u);
+    EXPECT_LT(g.cellBoxes.size(), leaves * 3 / 4)
+        << "merging saves a quarter of the cells at least";
+}
+
 // Every primitive is listed in each cell its box overlaps, and only near such cells.
 TEST(AdaptiveGrid, CellsListExactlyTheOverlappingPrimitives) {
     Scene scene = test::clusterInARoom(43, 400, 60);
