@@ -13,14 +13,15 @@
 namespace prism {
 
 // The tracer's work per ray in primitive tests: a test costs 1, a DDA step kRegularStepCost and
-// an adaptive step kAdaptiveStepCost. Measured on lavapipe: with the adaptive grid `bunny`
-// visits 1.7 cells and makes 2.2 tests per primary ray against the regular grid's 5.0 and 3.9,
-// yet traces 4-12% slower (docs/benchmarks.md, "Choosing the grid").
+// an adaptive step kAdaptiveStepCost. Fitted to lavapipe (docs/benchmarks.md, "Choosing the
+// grid"): with the adaptive grid `scene` visits 1.7 cells and makes 2.1 tests a primary ray
+// against the regular grid's 6.1 and 2.6 and traces 0.77x the time; `bunny` 1.5 and 2.7 against
+// 5.0 and 3.9, and traces the same; `cornell` 1.4 and 8.7 against 2.0 and 5.3, 1.24x.
 constexpr double kRegularStepCost = 1.0;
-constexpr double kAdaptiveStepCost = 4.0;
+constexpr double kAdaptiveStepCost = 3.0;
 // Below this cost per ray on the regular grid the adaptive one is not built: it cannot save
 // enough (it still takes a step and a test a ray) to pay for its build.
-constexpr double kConsiderAdaptiveCost = 12.0;
+constexpr double kConsiderAdaptiveCost = 8.0;
 // The adaptive grid is chosen only when it is estimated at least this much cheaper.
 constexpr double kAdaptiveMargin = 0.9;
 
