@@ -35,20 +35,22 @@ bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
                 walk = startWalk(origin, dir, invDir, tEnter);
             bool walking = true;
             while (walking) {
-                uint cell;
+                uint cell, first;
                 float tCellExit;
                 if (ADAPTIVE_GRID) {
                     cell = enterBoxCell(boxWalk, origin, dir, invDir);
+                    first = boxWalk.firstPrimitive;
                     tCellExit = boxWalk.t;
                 } else {
                     tCellExit = min(min(walk.tNext.x, walk.tNext.y), walk.tNext.z);
                     cell = cellIndex(walk.cell);
+                    first = cellStartAt(cell);
                 }
                 uint end = cellStartAt(cell + 1u);
 #if TRACE_RAY_ANY_HIT
-                for (uint k = cellStartAt(cell); k < end && hit.kind == kKindNone; ++k) {
+                for (uint k = first; k < end && hit.kind == kKindNone; ++k) {
 #else
-                for (uint k = cellStartAt(cell); k < end; ++k) {
+                for (uint k = first; k < end; ++k) {
 #endif
                     testPrimitive(cellPrimitiveAt(k), origin, dir, wray, hit);
                 }

@@ -98,6 +98,7 @@ uint adaptiveCellAt(ivec3 v) {
 struct BoxWalk {
     ivec3 voxel;
     ivec3 boxMin, boxMax;
+    uint firstPrimitive; // the current cell's first entry in the primitive lists
     float t; // the current cell's exit (before enterBoxCell: where the walk enters)
     int axis;
 };
@@ -117,6 +118,7 @@ uint enterBoxCell(inout BoxWalk w, vec3 origin, vec3 dir, vec3 invDir) {
     uvec4 box = cellBoxAt(cell);
     w.boxMin = cellBoxMin(box);
     w.boxMax = cellBoxMax(box);
+    w.firstPrimitive = cellBoxFirstPrimitive(box);
     vec3 face = header.gridMin.xyz +
                 vec3(mix(w.boxMin, w.boxMax, greaterThan(dir, vec3(0.0)))) * header.voxelSize.xyz;
     vec3 tFace = mix((face - origin) * invDir, vec3(kInfinity), equal(dir, vec3(0.0)));

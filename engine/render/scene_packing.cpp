@@ -71,6 +71,8 @@ PackedScene packScene(const Scene &scene, const Grid &grid) {
     packed.cellPrimitives = grid.cellPrimitives;
     packed.gridEntries = grid.entries;
     packed.cellBoxes = grid.cellBoxes;
+    for (size_t c = 0; c < packed.cellBoxes.size(); ++c)
+        packed.cellBoxes[c].w = grid.cellStart[c]; // gpu::cellBoxFirstPrimitive
     h.voxelSize = glm::vec4(grid.voxelSize(), 0.0f);
     h.voxels = glm::uvec4(glm::uvec3(grid.voxelResolution()), grid.shift);
     return packed;

@@ -46,6 +46,11 @@ PRISM_INLINE ivec3 cellBoxMin(PRISM_IN(uvec4) box) {
 PRISM_INLINE ivec3 cellBoxMax(PRISM_IN(uvec4) box) {
     return ivec3(int(box.y >> 16u), int(box.z & 0xFFFFu), int(box.z >> 16u));
 }
+// On the GPU a box's w is the cell's first entry in the primitive lists (its cellStart), so a
+// step of the walk reads one offset less (render/scene_packing.cpp writes it).
+PRISM_INLINE uint cellBoxFirstPrimitive(PRISM_IN(uvec4) box) {
+    return box.w;
+}
 // A voxel-map entry: a split into 2^split parts per axis (0: a leaf) and what it points at.
 PRISM_INLINE uint entrySplit(uint entry) {
     return entry & 15u;

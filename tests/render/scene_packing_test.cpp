@@ -85,6 +85,21 @@ TEST(ScenePacking, PrimitiveIdRangesFollowTheKinds) {
     EXPECT_EQ(packScene(scene, buildGrid(scene, {})).header.idEnd, ids.end);
 }
 
+// The adaptive grid's cell boxes go up with each cell's first primitive-list entry in w, where
+// the walk reads it (gpu::cellBoxFirstPrimitive); the boxes themselves are unchanged.
+TEST(ScenePacking, AdaptiveCellBoxesCarryTheirFirstPrimitive) {
+    Scene scene = stabilityScene();
+    Grid grid = buildGrid(scene, parseGridOption("adaptive"));
+    ASSERT_TRUE(grid.adaptive());
+    PackedScene packed = packScene(scene, grid);
+    ASSERT_EQ(packed.cellBoxes.size(), grid.cellBoxes.size());
+    for (size_t c = 0; c < grid.cellBoxes.size(); ++c) {
+        EXPECT_EQ(gpu::cellBoxFirstPrimitive(packed.cellBoxes[c]), grid.cellStart[c]);
+        EXPECT_EQ(gpu::cellBoxMin(packed.cellBoxes[c]), gpu::cellBoxMin(grid.cellBoxes[c]));
+        EXPECT_EQ(gpu::cellBoxMax(packed.cellBoxes[c]), gpu::cellBoxMax(grid.cellBoxes[c]));
+    }
+}
+
 TEST(TracerFeatures, FollowTheScene) {
     Scene scene = stabilityScene();
     TracerFeatures f = featuresOf(scene);

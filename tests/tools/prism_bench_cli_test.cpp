@@ -57,4 +57,32 @@ TEST_F(PrismBenchCli, TableAndJsonForEveryVariant) {
     EXPECT_EQ(doc["results"][2]["grid"], "3x3x3");
 }
 
+// Embree traces the very rays Prism traces at depth 1: every camera ray, and one shadow ray
+// per light from each hit on a surface facing it. Their counts must agree.
+TEST_F(PrismBenchCli, EmbreeBaselineTracesTheSameRays) {
+    fs::path json = dir() / "out.json";
+    CliResult r = bench(scene_.string() + " --size 16x12 --depth 1 --runs 2 --variants auto,off " +
+                        "--baseline embree --json " + json.string());
+    if (r.exitCode != 0 && r.out.find("built without Embree") != std::string::npos)
+        GTEST_SKIP() << "prism-bench was built without Embree";
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.stdoutOnly.find("Mrays/s vs Embree"), std::string::npos) << r.stdoutOnly;
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream(json));
+    ASSERT_EQ(doc["results"].size(), 3u);
+    const auto &embree = doc["results"][2];
+    EXPECT_EQ(embree["variant"], "embree");
+    EXPECT_EQ(embree["frame_ms"].size(), 2u);
+    for (int v = 0; v < 2; ++v) {
+        EXPECT_EQ(doc["results"][v]["rays"]["primary"], embree["rays"]["primary"]);
+        EXPECT_EQ(doc["results"][v]["rays"]["shadow"], embree["rays"]["shadow"]);
+    }
+    EXPECT_GT(embree["rays"]["shadow"].get<uint64_t>(), 0u);
+}
+
+TEST_F(PrismBenchCli, UnknownBaselineIsRefused) {
+    CliResult r = bench(scene_.string() + " --baseline ospray");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("ospray"), std::string::npos) << r.out;
+}
+
 } // namespace

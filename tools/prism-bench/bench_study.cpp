@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "core/timer.h"
+#include "embree_baseline.h"
 #include "render/ray_tracer.h"
 #include "scene/scene_loader.h"
 
@@ -61,13 +62,32 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
             results.push_back(r);
             tracers.push_back(std::move(tracer));
         }
-        for (uint32_t run = 0; run < settings.runs; ++run)
+        std::unique_ptr<EmbreeBaseline> embree;
+        if (settings.embreeBaseline) {
+            progress(name + " embree: build + warm-up");
+            embree = std::make_unique<EmbreeBaseline>(scene, settings.width, settings.height);
+            BenchResult r;
+            r.scene = name;
+            r.variant = "embree";
+            r.primitives = scene.finitePrimitiveCount() + scene.planes.size();
+            r.grid = "BVH";
+            r.buildMs = embree->build().commitMs;
+            r.rays = embree->traceFrame().rays;
+            results.push_back(r);
+        }
+        for (uint32_t run = 0; run < settings.runs; ++run) {
             for (size_t v = 0; v < variants.size(); ++v) {
                 progress(name + " " + variants[v].name + ": frame " + std::to_string(run + 1) +
                          "/" + std::to_string(settings.runs));
                 FrameResult f = tracers[v]->renderFrame(scene.camera, settings.samplesPerPixel);
                 results[v].frameMs.push_back(f.gpuMs);
             }
+            if (embree) {
+                progress(name + " embree: frame " + std::to_string(run + 1) + "/" +
+                         std::to_string(settings.runs));
+                results.back().frameMs.push_back(embree->traceFrame().ms);
+            }
+        }
         all.insert(all.end(), results.begin(), results.end());
     }
     return all;

@@ -18,6 +18,9 @@ struct BenchSettings {
     uint32_t samplesPerPixel = 1;
     uint32_t maxDepth = 5;
     uint32_t runs = 5; // timed frames per variant, after one warm-up frame
+    // Also trace each scene's camera and shadow rays with Intel Embree on all cores (the
+    // baseline of issue 11), interleaved with the variants' frames: a row named "embree".
+    bool embreeBaseline = false;
 };
 
 struct BenchResult {
@@ -28,7 +31,7 @@ struct BenchResult {
     uint64_t gridBytes = 0;
     WalkCounts walk; // the grid's work per primary ray, counted on the CPU
     double buildMs = 0.0;
-    std::vector<double> frameMs; // GPU time of each timed frame
+    std::vector<double> frameMs; // GPU time of each timed frame (Embree: wall time)
     RayCounts rays;              // of one frame
     double medianMs() const;
     double mraysPerSecond() const; // at the median

@@ -12,6 +12,7 @@
 
 #include "bench_study.h"
 #include "core/error.h"
+#include "embree_baseline.h"
 
 using namespace prism;
 
@@ -29,11 +30,15 @@ std::vector<std::string> splitList(const std::string &text) {
 
 void printTable(const std::vector<BenchResult> &results, const BenchSettings &s,
                 const std::string &device) {
-    std::printf("Device: %s; %ux%u, %u spp, depth %u; median of %u frames after a warm-up.\n\n",
-                device.c_str(), s.width, s.height, s.samplesPerPixel, s.maxDepth, s.runs);
+    std::printf("Device: %s; %ux%u, %u spp, depth %u; median of %u frames after a warm-up.%s\n\n",
+                device.c_str(), s.width, s.height, s.samplesPerPixel, s.maxDepth, s.runs,
+                s.embreeBaseline ? " embree: Intel Embree on the CPU, all cores, primary and "
+                                   "shadow rays in 8-wide packets, wall time."
+                                 : "");
     std::printf("| scene | variant | primitives | grid | max/cell | bytes/prim | cells/ray | "
-                "tests/ray | build ms | trace ms (median) | Mrays/s | rays | vs first |\n"
-                "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+                "tests/ray | build ms | trace ms (median) | Mrays/s | rays | vs first |%s\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|%s\n",
+                s.embreeBaseline ? " Mrays/s vs Embree |" : "", s.embreeBaseline ? "---|" : "");
     double first = 0.0;
     std::string scene;
     for (const BenchResult &r : results) {
@@ -41,13 +46,22 @@ void printTable(const std::vector<BenchResult> &results, const BenchSettings &s,
             scene = r.scene;
             first = r.medianMs();
         }
-        std::printf(
-            "| %s | %s | %llu | %s | %u | %.0f | %.2f | %.2f | %.1f | %.1f | %.2f | %llu | "
-            "%.2f |\n",
-            r.scene.c_str(), r.variant.c_str(), (unsigned long long)r.primitives, r.grid.c_str(),
-            r.maxPerCell, double(r.gridBytes) / double(std::max<uint64_t>(1, r.primitives)),
-            r.walk.cellsPerRay, r.walk.testsPerRay, r.buildMs, r.medianMs(), r.mraysPerSecond(),
-            (unsigned long long)r.rays.total(), first > 0.0 ? r.medianMs() / first : 0.0);
+        std::string vsEmbree;
+        for (const BenchResult &e : results)
+            if (s.embreeBaseline && e.scene == r.scene && e.variant == "embree") {
+                char text[32];
+                std::snprintf(text, sizeof text, " %.2f |",
+                              r.mraysPerSecond() / e.mraysPerSecond());
+                vsEmbree = text;
+            }
+        std::printf("| %s | %s | %llu | %s | %u | %.0f | %.2f | %.2f | %.1f | %.1f | %.2f | %llu | "
+                    "%.2f |%s\n",
+                    r.scene.c_str(), r.variant.c_str(), (unsigned long long)r.primitives,
+                    r.grid.c_str(), r.maxPerCell,
+                    double(r.gridBytes) / double(std::max<uint64_t>(1, r.primitives)),
+                    r.walk.cellsPerRay, r.walk.testsPerRay, r.buildMs, r.medianMs(),
+                    r.mraysPerSecond(), (unsigned long long)r.rays.total(),
+                    first > 0.0 ? r.medianMs() / first : 0.0, vsEmbree.c_str());
     }
 }
 
@@ -95,6 +109,12 @@ int main(int argc, char **argv) {
            "no-reflection, no-refraction, no-shadows, texel or storage (how the hot arrays are "
            "read); join parts with +")
         ->default_val(variantList);
+    std::string baseline;
+    app.add_option("--baseline", baseline,
+                   "embree: also trace the same camera rays and one shadow ray per light per hit "
+                   "with Intel Embree on all cores (CPU), interleaved with the variants; Prism's "
+                   "Mrays/s is then given as a ratio to it (use --depth 1 for the same rays)")
+        ->check(CLI::IsMember({"embree"}));
     app.add_option("--json", jsonPath, "Also write every result (all frame times) as JSON");
     app.add_option("--device", deviceFilter, "First Vulkan device whose name contains this");
     CLI11_PARSE(app, argc, argv);
@@ -106,6 +126,10 @@ int main(int argc, char **argv) {
             throw Error("--size " + size + ": expected WxH, e.g. 1024x768");
         settings.width = w;
         settings.height = h;
+        settings.embreeBaseline = baseline == "embree";
+        if (settings.embreeBaseline && !embreeAvailable())
+            throw Error("--baseline embree: prism-bench was built without Embree (install "
+                        "libembree-dev with tools/scripts/install-deps.sh and reconfigure)");
         std::vector<BenchVariant> variants;
         for (const std::string &v : splitList(variantList))
             variants.push_back(parseBenchVariant(v));

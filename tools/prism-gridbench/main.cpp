@@ -16,7 +16,7 @@
 #include "accel/walk_counts.h"
 #include "core/error.h"
 #include "core/timer.h"
-#include "embree_build.h"
+#include "embree_baseline.h"
 #include "scene/scene_loader.h"
 
 namespace prism {
@@ -70,7 +70,7 @@ Row measureEmbree(const Scene &scene, const std::string &name, uint32_t runs) {
     row.layout = "BVH (rtcCommitScene)";
     row.primitives = scene.finitePrimitiveCount();
     for (uint32_t r = 0; r < runs; ++r)
-        row.buildsMs.push_back(timeEmbreeBuild(scene).commitMs);
+        row.buildsMs.push_back(EmbreeBaseline(scene, 1, 1).build().commitMs);
     row.buildMs = median(row.buildsMs);
     return row;
 }
