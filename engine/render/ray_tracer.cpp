@@ -140,6 +140,20 @@ void RayTracer::recordSamples(VkCommandBuffer commands, const Camera &camera, ui
     }
 }
 
+void RayTracer::compile(const Camera &camera) {
+    gpu::GpuFrameParams params = makeFrameParams(camera, width_, height_, 1, features_.maxDepth);
+    runner_.run([&](VkCommandBuffer commands) {
+        pipeline_->bind(commands);
+        vkCmdPushConstants(commands, pipeline_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                           sizeof(params), &params);
+        vkCmdDispatch(commands, 1, 1, 1);
+        vk::imageBarrier(commands, accum_.handle(), VK_IMAGE_LAYOUT_GENERAL,
+                         VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    });
+}
+
 FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixel,
                                    const std::function<void(double)> &progress) {
     FrameResult result;

@@ -42,6 +42,11 @@ public:
     void recordSamples(VkCommandBuffer commands, const Camera &camera, uint32_t firstSample,
                        uint32_t count, uint32_t samplesPerPixel);
 
+    // Traces one 8x8 tile, untimed and thrown away (the next frame's first sample overwrites
+    // it), so that a device that compiles the shader at its first dispatch (lavapipe) does so
+    // here and not inside a timed frame: a single render then needs no warm-up frame.
+    void compile(const Camera &camera);
+
     // A whole frame: all samples, submitted and waited for, with GPU time and ray counts.
     // With `progress`, samples go in several submissions and progress gets the fraction done.
     FrameResult renderFrame(const Camera &camera, uint32_t samplesPerPixel,

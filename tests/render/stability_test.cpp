@@ -233,6 +233,31 @@ TEST_F(Stability, LavapipeLoopCutIsCaughtOnTheAdaptiveGrid) {
     EXPECT_EQ(wrongAndUnreported(gpu.image, renderCpu(scene, 32, 32, 1, 1)), 0);
 }
 
+// The untimed compile dispatch (RayTracer::compile) leaves no trace: the frame after it, AOVs
+// and ray counts included, is the frame without it.
+TEST_F(Stability, CompileDispatchLeavesNoTrace) {
+    Scene scene = stabilityScene();
+    Grid grid = buildGrid(scene);
+    TracerOptions options;
+    options.writeAov = true;
+    auto render = [&](bool compileFirst) {
+        RayTracer tracer(context(), scene, grid, 40, 30, options);
+        if (compileFirst) {
+            Camera elsewhere = scene.camera; // a different view, so a leftover would show
+            elsewhere.eye += glm::vec3(3.0f, 1.0f, 0.0f);
+            tracer.compile(elsewhere);
+        }
+        FrameResult frame = tracer.renderFrame(scene.camera, 2);
+        return std::make_pair(tracer.readback(2), frame.rays);
+    };
+    auto [plain, plainRays] = render(false);
+    auto [compiled, compiledRays] = render(true);
+    EXPECT_EQ(compiled.rgba, plain.rgba);
+    EXPECT_EQ(compiled.depth, plain.depth);
+    EXPECT_EQ(compiled.normal, plain.normal);
+    EXPECT_EQ(compiledRays.total(), plainRays.total());
+}
+
 // Texel-buffer and storage-buffer reads of the same arrays must give the very same image.
 TEST_F(Stability, TexelAndStorageBufferReadsAgree) {
     Scene scene = stabilityScene();

@@ -42,9 +42,11 @@ RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const G
     RenderOutcome out;
     out.device = context.deviceName();
     ProgressLine progress(!o.quiet);
-    // Frame 0 warms up: lavapipe compiles the shader inside the first dispatch, so it is not
-    // timed. One sample per pixel is enough for that and costs 1/spp of a frame.
-    for (uint32_t frame = 0; frame <= o.repeat; ++frame) {
+    // lavapipe compiles the shader inside the first dispatch: one 8x8 tile takes that out of
+    // the timed frames. Timing several frames (--repeat) also gets a warm-up frame, so that
+    // they are alike (caches, clocks); a single render does not pay a second frame for that.
+    tracer.compile(scene.camera);
+    for (uint32_t frame = o.repeat > 1 ? 0 : 1; frame <= o.repeat; ++frame) {
         std::string label = frame == 0
                                 ? "warm-up frame"
                                 : "frame " + std::to_string(frame) + "/" + std::to_string(o.repeat);
