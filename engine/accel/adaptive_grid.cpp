@@ -23,10 +23,10 @@ constexpr uint32_t kMaxIdleSplits = 3;
 
 // Voxels per top cell and axis: as fine as 16-bit voxel coordinates allow, at most what the
 // levels can split.
-uint32_t chooseShift(const glm::ivec3 &topResolution) {
+uint32_t chooseShift(const glm::ivec3 &topResolution, uint32_t maxDepth) {
     int largest = std::max({topResolution.x, topResolution.y, topResolution.z});
     uint32_t shift = 0;
-    while (shift < kAdaptiveMaxDepth * kAdaptiveMaxSplit && (largest << (shift + 1)) <= 65535)
+    while (shift < maxDepth * kAdaptiveMaxSplit && (largest << (shift + 1)) <= 65535)
         ++shift;
     return shift;
 }
@@ -47,9 +47,9 @@ struct Fragment {
 class Splitter {
 public:
     Splitter(Fragment &out, const Grid &grid, const FinitePrimitives &primitives, double density,
-             double magnitude, size_t budget)
+             double magnitude, size_t budget, const AdaptiveStyle &style)
         : out_(out), grid_(grid), primitives_(primitives), density_(density), magnitude_(magnitude),
-          voxelSize_(glm::dvec3(grid.voxelSize())), budget_(budget) {}
+          voxelSize_(glm::dvec3(grid.voxelSize())), budget_(budget), style_(style) {}
 
     // Makes entry `entry` the cell, or the tree of cells, of the box of 2^sizeShift voxels per
     // axis from voxelMin, which `refs` overlap.
@@ -70,9 +70,9 @@ public:
         // cheapest is made if it beats not splitting. Counts here go by bounding boxes (a
         // superset of what each part will list): exact tests are left to the leaves, where
         // they are needed, instead of being repeated at every level and candidate.
-        uint32_t best = 0;
+        uint32_t best = style_.costModel ? 0 : split;
         double bestCost = double(n);
-        for (uint32_t d = split; d >= 1; --d) {
+        for (uint32_t d = split; d >= 1 && style_.costModel; --d) {
             double parts = double(1u << d);
             double cost = kStepCost * 1.5 * parts +
                           double(referencesAfter(refs, voxelMin, sizeShift, d)) / (parts * parts);
@@ -119,13 +119,14 @@ public:
         out_.entries.resize(first + children.count());
         out_.entries[entry] = uint32_t(first) << 4 | split;
         out_.depth = std::max(out_.depth, level + 1);
-        mergeEmptyParts(uint32_t(first), children, childShift, childRefs);
+        if (style_.mergeEmptyParts)
+            mergeEmptyParts(uint32_t(first), children, childShift, childRefs);
         for (int z = 0; z < int(parts); ++z)
             for (int y = 0; y < int(parts); ++y)
                 for (int x = 0; x < int(parts); ++x) {
                     glm::ivec3 cell = children.lo + glm::ivec3(x, y, z);
                     uint32_t local = children.local(cell);
-                    if (!childRefs[local].empty())
+                    if (!style_.mergeEmptyParts || !childRefs[local].empty())
                         build(uint32_t(first) + local, cell << int(childShift), childShift,
                               level + 1, idleSplits, std::move(childRefs[local]));
                 }
@@ -163,7 +164,7 @@ private:
     // Parts per axis, as a power of two: about density cells per primitive held (a split into
     // 8^d cells), none for a cell with few primitives or no levels left.
     uint32_t chooseSplit(uint32_t n, uint32_t sizeShift, uint32_t level) const {
-        if (n <= kAdaptiveLeafPrimitives || sizeShift == 0 || level >= kAdaptiveMaxDepth)
+        if (n <= kAdaptiveLeafPrimitives || sizeShift == 0 || level >= style_.maxDepth)
             return 0;
         double d = std::round(std::log2(std::cbrt(density_ * double(n))));
         return uint32_t(std::clamp(d, 1.0, double(std::min(kAdaptiveMaxSplit, sizeShift))));
@@ -251,6 +252,7 @@ private:
     double magnitude_;
     glm::dvec3 voxelSize_;
     size_t budget_;
+    AdaptiveStyle style_;
 };
 
 // Appends a top cell's fragment to the grid, renumbering its entries and cells.
@@ -282,9 +284,9 @@ void join(Grid &grid, uint32_t topCell, const Fragment &f) {
 
 } // namespace
 
-void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives,
-                        const GridOptions &options) {
-    grid.shift = chooseShift(grid.resolution);
+void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const GridOptions &options,
+                        const AdaptiveStyle &style) {
+    grid.shift = chooseShift(grid.resolution, style.maxDepth);
     Lattice top = wholeGrid(grid);
     // By bounding box, as every level above the leaves (Splitter::build).
     CellBinner binner(top);
@@ -307,7 +309,7 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives,
                         int(t / (uint64_t(grid.resolution.x) * uint32_t(grid.resolution.y))));
         size_t budget = 64 * topRefs[t].size() + 4096;
         Splitter splitter(fragments[t], grid, primitives, double(options.density), top.magnitude,
-                          budget);
+                          budget, style);
         splitter.build(0, cell << int(grid.shift), grid.shift, 0, 0, std::move(topRefs[t]));
     });
     grid.entries.assign(top.count(), 0u);
@@ -317,7 +319,8 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives,
         join(grid, t, fragments[t]);
         fragments[t] = {}; // free as we go
     }
-    expandCells(grid);
+    if (style.expand)
+        expandCells(grid);
 }
 
 glm::uvec4 packCellBox(glm::ivec3 min, glm::ivec3 max) {

@@ -17,11 +17,23 @@ constexpr uint32_t kAdaptiveLeafPrimitives = 2;
 constexpr uint32_t kAdaptiveMaxDepth = 4;
 constexpr uint32_t kAdaptiveMaxSplit = 3;
 
+// What the build does beyond the top grid. The adaptive grid uses all of it; the two-level grid
+// (Kalojanov, Stich & Slusallek 2011, in power-of-two form: --grid two-level) splits each top
+// cell once, by density alone, and keeps every part as its own cell, unexpanded, so that the
+// benchmarks can set the steps of the irregular grid apart.
+struct AdaptiveStyle {
+    uint32_t maxDepth = kAdaptiveMaxDepth; // levels below the top grid
+    bool costModel = true;                 // price each split (SAH) and keep the cheapest
+    bool mergeEmptyParts = true;           // the empty parts of a split become few cells
+    bool expand = true;                    // cells grow over neighbours they cover
+};
+constexpr AdaptiveStyle kTwoLevelStyle{1, false, false, false};
+
 // Fills grid.shift, entries, cellBoxes (expanded: accel/cell_expansion.h), cellStart,
 // cellPrimitives, depth and maxPerCell; the grid's bounds, top resolution and cell size are
-// already set. Cells split to about
-// options.density cells per primitive they hold. Throws prism::Error when the grid would need
-// more than 2^28 cells or entries.
-void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const GridOptions &options);
+// already set. Cells split to about options.density cells per primitive they hold. Throws
+// prism::Error when the grid would need more than 2^28 cells or entries.
+void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const GridOptions &options,
+                        const AdaptiveStyle &style = {});
 
 } // namespace prism

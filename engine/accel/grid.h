@@ -25,6 +25,9 @@ struct GridOptions {
         // own density (a power of two per axis): dense regions get small cells, sparse
         // regions large ones, so a small dense object in a large scene is not one cell.
         Adaptive,
+        // The same top grid, each crowded top cell split once by density: the two-level grid
+        // the adaptive one grew from, for comparison (accel/adaptive_grid.h, kTwoLevelStyle).
+        TwoLevel,
     };
     Mode mode = Mode::Auto;
     glm::ivec3 resolution{1}; // Fixed only
@@ -33,8 +36,8 @@ struct GridOptions {
     float density = 4.0f;
 };
 
-// Parses --grid's argument: "auto", "regular", "off", "adaptive", "N" (N^3) or "NxNyNz", each
-// count in 1..1024.
+// Parses --grid's argument: "auto", "regular", "off", "adaptive", "two-level", "N" (N^3) or
+// "NxNyNz", each count in 1..1024.
 // Throws prism::Error with a message naming the bad text.
 GridOptions parseGridOption(std::string_view text);
 

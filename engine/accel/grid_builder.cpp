@@ -95,6 +95,7 @@ Grid buildOneGrid(const Scene &scene, const GridOptions &options) {
         grid.resolution = options.resolution;
         break;
     case GridOptions::Mode::Adaptive:
+    case GridOptions::Mode::TwoLevel:
         grid.resolution = chooseResolution(glm::dvec3(grid.boundsMax - grid.boundsMin), primitives,
                                            kAdaptiveTopDensity);
         break;
@@ -120,6 +121,10 @@ Grid buildOneGrid(const Scene &scene, const GridOptions &options) {
 
     if (options.mode == GridOptions::Mode::Adaptive) {
         buildAdaptiveCells(grid, finite, options);
+        return grid;
+    }
+    if (options.mode == GridOptions::Mode::TwoLevel) {
+        buildAdaptiveCells(grid, finite, options, kTwoLevelStyle);
         return grid;
     }
     CellBinner binner(wholeGrid(grid));

@@ -11,7 +11,7 @@ namespace {
 
 [[noreturn]] void badGrid(std::string_view text, const std::string &why) {
     throw Error("--grid " + std::string(text) + ": " + why +
-                " (expected auto, regular, off, adaptive, N or NxNyNz with counts 1.." +
+                " (expected auto, regular, off, adaptive, two-level, N or NxNyNz with counts 1.." +
                 std::to_string(kMaxGridAxisCells) + ")");
 }
 
@@ -37,6 +37,10 @@ GridOptions parseGridOption(std::string_view text) {
     }
     if (text == "regular") {
         options.mode = GridOptions::Mode::Regular;
+        return options;
+    }
+    if (text == "two-level") {
+        options.mode = GridOptions::Mode::TwoLevel;
         return options;
     }
     if (text == "adaptive") {

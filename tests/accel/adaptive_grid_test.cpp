@@ -48,6 +48,7 @@ void expectWellFormed(const Grid &g) {
 TEST(AdaptiveGrid, BoxesLieInTheGridAndTheMapFindsThem) {
     expectWellFormed(adaptive(test::randomSpheresAndTriangles(41, 300, 600)));
     expectWellFormed(adaptive(test::clusterInARoom(42, 2000, 100)));
+    expectWellFormed(buildGrid(test::clusterInARoom(42, 2000, 100), parseGridOption("two-level")));
 }
 
 // The empty parts of a split become few cells, each the box of the map entries that point to

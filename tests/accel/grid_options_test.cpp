@@ -9,6 +9,7 @@ namespace {
 
 TEST(GridOptions, AutoAndOff) {
     EXPECT_EQ(parseGridOption("auto").mode, GridOptions::Mode::Auto);
+    EXPECT_EQ(parseGridOption("two-level").mode, GridOptions::Mode::TwoLevel);
     EXPECT_EQ(parseGridOption("off").mode, GridOptions::Mode::Off);
 }
 

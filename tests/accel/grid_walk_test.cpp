@@ -163,6 +163,16 @@ TEST(AdaptiveGridWalk, FindsEveryCrossingOnRandomRays) {
 
 // Rays from inside the cluster, inside the room and outside it; the cluster is 500 times
 // smaller than the room, so its cells are several levels down.
+// The two-level grid (one split, no merge, no expansion) takes the same walk.
+TEST(AdaptiveGridWalk, TwoLevelGridFindsEveryCrossing) {
+    Scene scene = test::clusterInARoom(34, 600, 100);
+    Grid g = buildGrid(scene, parseGridOption("two-level"));
+    EXPECT_TRUE(g.adaptive());
+    EXPECT_EQ(g.depth, 1u) << "one level below the top grid";
+    checkRays(scene, g, 5, 1500, 1.5);
+    checkRays(scene, g, 6, 1500, 700.0);
+}
+
 TEST(AdaptiveGridWalk, FindsEveryCrossingInAClusterInARoom) {
     Scene scene = test::clusterInARoom(32, 600, 100);
     Grid g = buildGrid(scene, parseGridOption("adaptive"));

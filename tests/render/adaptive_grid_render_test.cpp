@@ -52,18 +52,29 @@ TEST_P(AdaptiveGridRender, MatchesTheRegularGrid) {
 INSTANTIATE_TEST_SUITE_P(ShippedScenes, AdaptiveGridRender, ::testing::ValuesIn(shippedScenes()),
                          [](const auto &info) { return info.param; });
 
-class AdaptiveGridCluster : public GpuTest {};
+class AdaptiveGridCluster : public GpuTest {
+protected:
+    // A cluster 500 times smaller than its room, seen from close by, lit through the room,
+    // traced on `grid` and held to the CPU reference.
+    void expectMatchesTheReference(unsigned seed, const char *grid) {
+        Scene scene = clusterInARoom(seed, 800, 60);
+        scene.materials.push_back(Material{"default"});
+        scene.camera.eye = {0.0f, 0.5f, -4.0f};
+        scene.camera.look = {0.0f, 0.0f, 0.0f};
+        scene.lights.push_back(Light{{100.0f, 300.0f, -200.0f}, glm::vec3(1.0f), 0.0f});
+        GpuRender gpu = renderGpu(context(), scene, 64, 48, 1, 2, parseGridOption(grid));
+        EXPECT_EQ(gpu.frame.overBudgetPixels, 0u);
+        expectClose(gpu.image.rgba, renderCpu(scene, 64, 48, 1, 2));
+    }
+};
 
-// A cluster 500 times smaller than its room, seen from close by, lit through the room.
 TEST_F(AdaptiveGridCluster, MatchesTheCpuReference) {
-    Scene scene = clusterInARoom(51, 800, 60);
-    scene.materials.push_back(Material{"default"});
-    scene.camera.eye = {0.0f, 0.5f, -4.0f};
-    scene.camera.look = {0.0f, 0.0f, 0.0f};
-    scene.lights.push_back(Light{{100.0f, 300.0f, -200.0f}, glm::vec3(1.0f), 0.0f});
-    GpuRender gpu = renderGpu(context(), scene, 64, 48, 1, 2, parseGridOption("adaptive"));
-    EXPECT_EQ(gpu.frame.overBudgetPixels, 0u);
-    expectClose(gpu.image.rgba, renderCpu(scene, 64, 48, 1, 2));
+    expectMatchesTheReference(51, "adaptive");
+}
+
+// The two-level grid (one split, no merge, no expansion) goes through the same walk.
+TEST_F(AdaptiveGridCluster, TwoLevelGridMatchesTheCpuReference) {
+    expectMatchesTheReference(52, "two-level");
 }
 
 // The study scene whose first adaptive image had 24 wrong pixels (at 256x192): a primary ray

@@ -13,7 +13,8 @@ BenchVariant parseBenchVariant(const std::string &text) {
     std::stringstream tokens(text);
     std::string token;
     while (std::getline(tokens, token, '+')) {
-        if (token == "auto" || token == "regular" || token == "off" || token == "adaptive") {
+        if (token == "auto" || token == "regular" || token == "off" || token == "adaptive" ||
+            token == "two-level") {
             v.grid.mode = parseGridOption(token).mode;
         } else if (token.rfind("grid=", 0) == 0) {
             float density = v.grid.density;
@@ -35,10 +36,10 @@ BenchVariant parseBenchVariant(const std::string &text) {
         } else if (token == "texel" || token == "storage") {
             v.tracer.texelBuffers = token == "texel";
         } else {
-            throw Error(
-                "variant " + text + ": unknown part '" + token +
-                "' (use auto, regular, off, adaptive, grid=N|NxNyNz, density=L, no-reflection, "
-                "no-refraction, no-shadows, texel, storage; join with +)");
+            throw Error("variant " + text + ": unknown part '" + token +
+                        "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
+                        "no-reflection, "
+                        "no-refraction, no-shadows, texel, storage; join with +)");
         }
     }
     return v;

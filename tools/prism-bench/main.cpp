@@ -105,7 +105,8 @@ int main(int argc, char **argv) {
         ->default_val(5);
     app.add_option(
            "--variants", variantList,
-           "Comma-separated variants: auto, regular, off, adaptive, grid=N|NxNyNz, density=L, "
+           "Comma-separated variants: auto, regular, off, adaptive, two-level, grid=N|NxNyNz, "
+           "density=L, "
            "no-reflection, no-refraction, no-shadows, texel or storage (how the hot arrays are "
            "read); join parts with +")
         ->default_val(variantList);

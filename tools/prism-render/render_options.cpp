@@ -57,8 +57,8 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
     app.add_option("--grid", options.gridText,
                    "Grid: auto (regular or adaptive, whichever costs the camera's rays less; "
                    "--stats says which and why), regular (sized to the scene), adaptive (cells "
-                   "that follow the geometry), off (test every primitive), N (N^3 cells) or "
-                   "NxNyNz")
+                   "that follow the geometry), two-level (the adaptive grid's one-level ancestor, "
+                   "for comparison), off (test every primitive), N (N^3 cells) or NxNyNz")
         ->default_val("auto");
     float density = GridOptions{}.density;
     app.add_option("--grid-density", density,

@@ -30,7 +30,8 @@ bool parseViewOptions(int argc, char **argv, ViewOptions &options, ViewScript &s
         ->check(CLI::Range(1u, 16u))
         ->default_val(5);
     app.add_option("--grid", grid,
-                   "Grid: auto (regular or adaptive, by cost), regular, adaptive, off (test every "
+                   "Grid: auto (regular or adaptive, by cost), regular, adaptive, two-level, off "
+                   "(test every "
                    "primitive), N (N^3 cells) or NxNyNz")
         ->default_val("auto");
     float density = GridOptions{}.density;
