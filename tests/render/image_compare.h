@@ -15,6 +15,9 @@ struct ImageDifference {
     double meanAbsolute = 0.0; // over all channels and pixels
     double largest = 0.0;
     size_t nonFinite = 0;
+    // The images are not comparable (different or no sizes): every pixel counts as differing,
+    // so that an empty or truncated readback fails every bound instead of passing them all.
+    bool sizesDiffer = false;
     double differingFraction() const { return pixels ? double(differing) / double(pixels) : 0.0; }
 };
 
@@ -22,7 +25,13 @@ struct ImageDifference {
 inline ImageDifference compareImages(const std::vector<float> &a, const std::vector<float> &b,
                                      double threshold, const std::vector<bool> &skip = {}) {
     ImageDifference d;
-    size_t count = std::min(a.size(), b.size()) / 4;
+    if (a.size() != b.size() || a.empty() || a.size() % 4 != 0) {
+        d.sizesDiffer = true;
+        d.pixels = d.differing = std::max<size_t>(1, std::max(a.size(), b.size()) / 4);
+        d.meanAbsolute = d.largest = HUGE_VAL;
+        return d;
+    }
+    size_t count = a.size() / 4;
     double sum = 0.0;
     for (size_t p = 0; p < count; ++p) {
         if (!skip.empty() && skip[p])
@@ -78,6 +87,8 @@ inline std::vector<bool> edgeBand(const std::vector<float> &rgba, int width, int
 }
 
 inline std::string describe(const ImageDifference &d) {
+    if (d.sizesDiffer)
+        return "the images differ in size (or are empty): nothing to compare";
     return std::to_string(d.differing) + "/" + std::to_string(d.pixels) +
            " pixels differ, mean abs " + std::to_string(d.meanAbsolute) + ", largest " +
            std::to_string(d.largest) + ", non-finite " + std::to_string(d.nonFinite);

@@ -1,6 +1,7 @@
 // prism-render as a user meets it: help, errors with FILE:LINE, exit codes, no partial output,
 // the --stats line and the EXR it writes.
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -101,6 +102,35 @@ TEST_F(PrismRenderCli, CpuBackendWritesPng) {
     prism::LoadedImage image = prism::readImage(out);
     EXPECT_EQ(image.channels, 3);
     EXPECT_GT(image.pixels[(6 * 16 + 8) * 3], 0.1f) << "the lit sphere is in the middle";
+}
+
+// The EXR holds the picture itself: every pixel the GPU wrote agrees with the CPU reference's
+// file of the same scene (float against double: the scene regression test's bound, 0.02, with
+// nothing left out), and the lit sphere, the floor and the background are where they should be.
+TEST_F(PrismRenderCli, ExrPixelsMatchTheCpuReference) {
+    fs::path scene = write("ok.scene", "camera eye 0 1 5 look 0 0 0\nlight 2 3 5\n"
+                                       "material red color 0.9 0.2 0.1\nbackground 0.1 0.2 0.3\n"
+                                       "sphere 0 0 0 1 red\nplane 0 -1 0 0 1 0\n");
+    fs::path gpu = dir() / "gpu.exr", cpu = dir() / "cpu.exr";
+    ASSERT_EQ(run(scene.string() + " -o " + gpu.string() + " --size 32x24 --quiet").exitCode, 0);
+    ASSERT_EQ(run(scene.string() + " -o " + cpu.string() + " --size 32x24 --backend cpu --quiet")
+                  .exitCode,
+              0);
+    prism::LoadedImage g = prism::readImage(gpu), c = prism::readImage(cpu);
+    ASSERT_EQ(g.pixels.size(), size_t(32 * 24 * 4));
+    ASSERT_EQ(c.pixels.size(), g.pixels.size());
+    size_t differing = 0;
+    for (size_t p = 0; p < size_t(32 * 24); ++p)
+        for (int ch = 0; ch < 3; ++ch)
+            if (std::abs(g.pixels[p * 4 + ch] - c.pixels[p * 4 + ch]) > 0.02f) {
+                ++differing;
+                break;
+            }
+    EXPECT_LE(differing, 32u * 24u / 100u) << "more than 1% of pixels differ from the reference";
+    const float *centre = &g.pixels[(12 * 32 + 16) * 4], *corner = &g.pixels[0];
+    EXPECT_GT(centre[0], 2.0f * centre[1]) << "the red sphere fills the middle";
+    EXPECT_NEAR(corner[0], 0.1f, 1e-6f) << "the background colour in the top corner";
+    EXPECT_NEAR(corner[2], 0.3f, 1e-6f);
 }
 
 } // namespace
