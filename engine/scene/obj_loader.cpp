@@ -32,22 +32,49 @@ glm::vec<N, float> objVector(const std::vector<std::string_view> &words, int nee
     return result;
 }
 
-// OBJ index (1-based, or negative relative to the count so far) to a 0-based index. `what`
-// names the kind in messages: "" (vertex), "texture coordinate " or "normal "; `plural` is the
-// kind's plural.
-int32_t resolveIndex(std::string_view text, size_t count, const char *what, const char *plural) {
+// Where the reader is: the file and line for messages, and which warnings were given.
+struct ObjContext {
+    const std::string &fileName;
+    int line = 0;
+    bool warnedUv = false, warnedNormal = false;
+};
+
+std::string rangeMessage(const char *what, int64_t value, size_t count, const char *plural) {
+    return "face " + std::string(what) + "index " + std::to_string(value) + " is out of range (" +
+           std::to_string(count) + " " + plural + " defined so far)";
+}
+
+// OBJ index (1-based, or negative relative to the count so far) to a 0-based index, or
+// kObjNoIndex when out of range (`value`: the index as written). `what` names the kind in
+// messages: "" (vertex), "texture coordinate " or "normal ".
+int32_t resolveIndex(std::string_view text, size_t count, const char *what, int64_t &value) {
     ParsedInteger parsed = parseInteger(text);
     if (!parsed.ok())
         throw LineError("bad face " + std::string(what) + "index '" + std::string(text) + "'");
+    value = parsed.value;
     int64_t index = parsed.value > 0 ? parsed.value - 1 : int64_t(count) + parsed.value;
     if (parsed.value == 0 || index < 0 || index >= int64_t(count))
-        throw LineError("face " + std::string(what) + "index " + std::to_string(parsed.value) +
-                        " is out of range (" + std::to_string(count) + " " + plural +
-                        " defined so far)");
+        return kObjNoIndex;
     return int32_t(index);
 }
 
-ObjCorner parseCorner(std::string_view word, const ObjModel &model) {
+// A texture coordinate or normal: out of range, the corner goes without it (warned once).
+int32_t optionalIndex(std::string_view text, size_t count, const char *what, const char *plural,
+                      bool &warned, ObjContext &context, ObjModel &model) {
+    int64_t value = 0;
+    int32_t index = resolveIndex(text, count, what, value);
+    if (value == 0) // not a reference at all: malformed, as for a vertex
+        throw LineError(rangeMessage(what, value, count, plural));
+    if (index == kObjNoIndex && !warned) {
+        warned = true;
+        model.warnings.push_back(warningAt(context.fileName, context.line,
+                                           rangeMessage(what, value, count, plural) +
+                                               "; such corners go without (warned once)"));
+    }
+    return index;
+}
+
+ObjCorner parseCorner(std::string_view word, ObjContext &context, ObjModel &model) {
     std::string_view parts[3];
     int partCount = 0;
     for (size_t start = 0;;) {
@@ -64,16 +91,20 @@ ObjCorner parseCorner(std::string_view word, const ObjModel &model) {
         (partCount == 3 && parts[2].empty()))
         throw LineError("bad face corner '" + std::string(word) + "'");
     ObjCorner corner;
-    corner.position = resolveIndex(parts[0], model.positions.size(), "", "vertices");
+    int64_t value = 0;
+    corner.position = resolveIndex(parts[0], model.positions.size(), "", value);
+    if (corner.position == kObjNoIndex) // a position is geometry: no way round it
+        throw LineError(rangeMessage("", value, model.positions.size(), "vertices"));
     if (partCount >= 2 && !parts[1].empty())
-        corner.uv =
-            resolveIndex(parts[1], model.uvs.size(), "texture coordinate ", "texture coordinates");
+        corner.uv = optionalIndex(parts[1], model.uvs.size(), "texture coordinate ",
+                                  "texture coordinates", context.warnedUv, context, model);
     if (partCount == 3)
-        corner.normal = resolveIndex(parts[2], model.normals.size(), "normal ", "normals");
+        corner.normal = optionalIndex(parts[2], model.normals.size(), "normal ", "normals",
+                                      context.warnedNormal, context, model);
     return corner;
 }
 
-void parseFace(const std::vector<std::string_view> &words, int line, ObjModel &model) {
+void parseFace(const std::vector<std::string_view> &words, ObjContext &context, ObjModel &model) {
     size_t cornerCount = words.size() - 1;
     if (cornerCount < 3)
         throw LineError("a face needs at least 3 vertices, got " + std::to_string(cornerCount));
@@ -81,14 +112,15 @@ void parseFace(const std::vector<std::string_view> &words, int line, ObjModel &m
     face.firstCorner = uint32_t(model.corners.size());
     face.cornerCount = uint32_t(cornerCount);
     face.materialSlot = model.useMtl.empty() ? kObjNoIndex : int32_t(model.useMtl.size() - 1);
-    face.line = line;
+    face.line = context.line;
     for (size_t i = 1; i < words.size(); ++i)
-        model.corners.push_back(parseCorner(words[i], model));
+        model.corners.push_back(parseCorner(words[i], context, model));
     model.faces.push_back(face);
 }
 
-void parseStatement(std::string_view text, const std::vector<std::string_view> &words, int line,
-                    ObjModel &model) {
+void parseStatement(std::string_view text, const std::vector<std::string_view> &words,
+                    ObjContext &context, ObjModel &model) {
+    int line = context.line;
     std::string_view keyword = words[0];
     if (keyword == "v") {
         model.positions.push_back(objVector<3>(words, 3, "a vertex"));
@@ -97,7 +129,7 @@ void parseStatement(std::string_view text, const std::vector<std::string_view> &
     } else if (keyword == "vn") {
         model.normals.push_back(objVector<3>(words, 3, "a normal"));
     } else if (keyword == "f") {
-        parseFace(words, line, model);
+        parseFace(words, context, model);
     } else if (keyword == "usemtl") {
         model.useMtl.push_back(ObjUseMtl{std::string(restAfterFirstWord(text)), line});
     } else if (keyword == "mtllib") {
@@ -114,6 +146,7 @@ void parseStatement(std::string_view text, const std::vector<std::string_view> &
 
 ObjModel parseObj(std::string_view text, const std::string &fileName) {
     ObjModel model;
+    ObjContext context{fileName};
     LineCursor lines(text);
     std::string_view line;
     std::vector<std::string_view> words;
@@ -122,7 +155,8 @@ ObjModel parseObj(std::string_view text, const std::string &fileName) {
         if (words.empty())
             continue;
         try {
-            parseStatement(line, words, lines.lineNumber(), model);
+            context.line = lines.lineNumber();
+            parseStatement(line, words, context, model);
         } catch (const LineError &e) {
             throw FileError(fileName, lines.lineNumber(), e.what());
         }

@@ -44,13 +44,17 @@ struct ObjModel {
     std::vector<ObjFace> faces;
     std::vector<ObjUseMtl> useMtl;
     std::vector<ObjMtlLib> mtlLibs;
+    // "FILE:LINE: warning: ..." lines, for Scene::warnings: at most one per kind of problem.
+    std::vector<std::string> warnings;
 };
 
 // Parses OBJ text. Reads v (extra w or colour values ignored), vt (u [v [w]]), vn, f (v, v/vt,
 // v//vn, v/vt/vn; negative = relative to the last one defined), usemtl and mtllib; ignores every
 // other statement. An index must refer to an element defined above its face. Throws
-// prism::FileError(fileName, line, ...) for a bad number, a bad or out-of-range index, or a face
-// with fewer than 3 corners.
+// prism::FileError(fileName, line, ...) for a bad number, a bad index, a vertex index out of
+// range, or a face with fewer than 3 corners. A texture-coordinate or normal index out of range
+// (a file whose vt or vn lines were taken out; tinyobjloader and Blender load it) is not a
+// geometry error: the corner goes without, and the first such index of each kind is a warning.
 ObjModel parseObj(std::string_view text, const std::string &fileName);
 
 } // namespace prism

@@ -265,6 +265,8 @@ void mesh(SceneBuilder &builder, const DirectiveArgs &args) {
     }
     std::string text = readTextFile(request.objPath, "OBJ file");
     ObjModel model = parseObj(text, displayPath(request.objPath));
+    builder.scene.warnings.insert(builder.scene.warnings.end(), model.warnings.begin(),
+                                  model.warnings.end());
     MeshImportResult result =
         builder.meshes.import(model, request, builder.scene, builder.textures);
     warnDropped(builder, int(result.degenerateDropped),

@@ -81,6 +81,22 @@ TEST(MeshImporter, NormalsAndUvsOnlyWhenAllThreeCornersHaveThem) {
     EXPECT_FALSE(scene.triangles[2].hasNormals);
 }
 
+// `f 1//1 2//2 3//3` after the vn lines were commented out: the mesh loads, its triangles use
+// their geometric normals, and the scene says so once, at the OBJ line.
+TEST(MeshImporter, FacesNamingMissingNormalsLoadWithAWarning) {
+    TempDir dir;
+    dir.write("n.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n# vn 0 0 1\n"
+                       "f 1//1 2//1 3//1\nf 2//1 4//1 3//1\n");
+    Scene scene = loadScene(dir.write("s.scene", "mesh n.obj\n"));
+    ASSERT_EQ(scene.triangles.size(), 2u);
+    for (const Triangle &t : scene.triangles)
+        EXPECT_FALSE(t.hasNormals);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("n.obj:6: warning: face normal index 1 is out of range"),
+              std::string::npos)
+        << scene.warnings[0];
+}
+
 TEST(MeshImporter, ZeroAreaTrianglesAreDroppedAndCountedInAWarning) {
     TempDir dir;
     dir.write("d.obj", "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 3\nf 1 1 4\nf 1 2 4\n");

@@ -113,13 +113,34 @@ TEST(ObjLoader, BadFacesAreErrorsAtTheirLine) {
     expectObjError(three + "f -4 1 2\n", 4, "face index -4 is out of range");
     expectObjError("f 1 2 3\n" + three, 1, "face index 1 is out of range (0 vertices");
     expectObjError(three + "f 1 2\n", 4, "a face needs at least 3 vertices, got 2");
-    expectObjError(three + "vt 0 0\nf 1/1 2/1 3/1\nf 1/2 2/1 3/1\n", 6,
-                   "face texture coordinate index 2 is out of range (1 texture coordinates");
-    expectObjError(three + "f 1//1 2//1 3//1\n", 4, "face normal index 1 is out of range");
+    expectObjError(three + "vt 0 0\nf 1/0 2/1 3/1\n", 5, "face texture coordinate index 0");
+    expectObjError(three + "vn 0 0 1\nf 1//1 2//0 3//1\n", 5, "face normal index 0");
     expectObjError(three + "f 1 2 3.5\n", 4, "bad face index '3.5'");
     expectObjError(three + "f 1 2 3/\n", 4, "bad face corner '3/'");
     expectObjError(three + "f 1 2 3/1/1/1\n", 4, "bad face corner");
     expectObjError(three + "f 1 2 /1\n", 4, "bad face corner");
+}
+
+// Faces naming texture coordinates or normals that are not there (their vt or vn lines taken
+// out) load as tinyobjloader and Blender load them: those corners go without, and the first such
+// index of each kind is a warning at its line. Positions stay errors (above).
+TEST(ObjLoader, MissingNormalsAndTextureCoordinatesAreWarnedOnce) {
+    ObjModel m =
+        parseObj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 0.5\n"
+                 "f 1//1 2//2 3//3\nf 1//4 2//5 3//6\nf 1/1 2/2 3/1\nf 3/1/7 2/9/1 1/1/1\n",
+                 "model.obj");
+    ASSERT_EQ(m.faces.size(), 4u);
+    for (const ObjCorner &c : m.corners)
+        EXPECT_EQ(c.normal, kObjNoIndex);
+    EXPECT_EQ(m.corners[6].uv, 0);
+    EXPECT_EQ(m.corners[7].uv, kObjNoIndex);
+    ASSERT_EQ(m.warnings.size(), 2u);
+    EXPECT_EQ(m.warnings[0], "model.obj:5: warning: face normal index 1 is out of range (0 "
+                             "normals defined so far); such corners go without (warned once)");
+    EXPECT_NE(m.warnings[1].find("model.obj:7: warning: face texture coordinate index 2 is out "
+                                 "of range (1 texture coordinates"),
+              std::string::npos)
+        << m.warnings[1];
 }
 
 } // namespace
