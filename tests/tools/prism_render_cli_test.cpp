@@ -72,8 +72,13 @@ TEST_F(PrismRenderCli, StatsLineAndExrWithAovsAndMetadata) {
                       " --size 24x16 --spp 2 --repeat 3 --aov z,normal --stats --validation");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     nlohmann::json stats = nlohmann::json::parse(r.stdoutOnly);
-    for (const char *key : {"build_ms", "trace_ms", "trace_ms_median", "mrays_per_s", "rays"})
+    for (const char *key :
+         {"build_ms", "trace_ms", "trace_ms_median", "mrays_per_s", "rays", "grid_choice",
+          "grid_cells", "grid_bytes", "grid_cells_per_primary_ray", "grid_tests_per_primary_ray"})
         EXPECT_TRUE(stats.contains(key)) << key;
+    EXPECT_EQ(stats["grid_choice"].get<std::string>().rfind("regular", 0), 0u)
+        << "one sphere: --grid auto keeps the regular grid";
+    EXPECT_GT(stats["grid_tests_per_primary_ray"].get<double>(), 0.0);
     EXPECT_EQ(stats["rays"]["primary"].get<uint64_t>(), 24u * 16u * 2u);
     EXPECT_GT(stats["rays"]["shadow"].get<uint64_t>(), 0u);
     EXPECT_EQ(stats["frames"].get<int>(), 3);
@@ -83,14 +88,19 @@ TEST_F(PrismRenderCli, StatsLineAndExrWithAovsAndMetadata) {
     EXPECT_EQ(image.height, 16);
     std::vector<std::string> expected = {"R", "G", "B", "A", "Z", "N.X", "N.Y", "N.Z"};
     EXPECT_EQ(image.channelNames, expected);
-    bool hasCommandLine = false, hasDevice = false;
+    bool hasCommandLine = false, hasDevice = false, hasChoice = false, hasCounts = false;
     for (const auto &[name, value] : image.metadata.strings) {
         hasCommandLine = hasCommandLine || (name == "prism:commandLine" &&
                                             value.find("--aov z,normal") != std::string::npos);
         hasDevice = hasDevice || name == "prism:device";
+        hasChoice = hasChoice || (name == "prism:gridChoice" && value == stats["grid_choice"]);
     }
+    for (const auto &[name, value] : image.metadata.floats)
+        hasCounts = hasCounts || (name == "prism:gridTestsPerPrimaryRay" && value > 0.0f);
     EXPECT_TRUE(hasCommandLine);
     EXPECT_TRUE(hasDevice);
+    EXPECT_TRUE(hasChoice) << "the EXR says which grid auto chose";
+    EXPECT_TRUE(hasCounts);
 }
 
 TEST_F(PrismRenderCli, CpuBackendWritesPng) {

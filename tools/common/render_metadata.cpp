@@ -20,12 +20,17 @@ ImageMetadata renderMetadata(const RenderRecord &r) {
                     {"prism:device", r.device},
                     {"prism:backend", r.backend},
                     {"prism:gridResolution", r.gridResolution},
+                    {"prism:gridChoice", r.gridChoice},
+                    {"prism:gridCells", std::to_string(r.gridCells)},
+                    {"prism:gridBytes", std::to_string(r.gridBytes)},
                     {"prism:raysPrimary", std::to_string(r.rays.primary)},
                     {"prism:raysShadow", std::to_string(r.rays.shadow)},
                     {"prism:raysSecondary", std::to_string(r.rays.secondary)}};
     meta.floats = {{"prism:renderTimeMs", float(r.renderTimeMs)},
                    {"prism:renderTimeMedianMs", float(r.renderTimeMedianMs)},
                    {"prism:gridBuildMs", float(r.gridBuildMs)},
+                   {"prism:gridCellsPerPrimaryRay", float(r.gridCellsPerPrimaryRay)},
+                   {"prism:gridTestsPerPrimaryRay", float(r.gridTestsPerPrimaryRay)},
                    {"prism:mraysPerSecond", float(r.mraysPerSecond)}};
     meta.ints = {{"prism:samplesPerPixel", int(r.samplesPerPixel)},
                  {"prism:maxDepth", int(r.maxDepth)}};

@@ -18,8 +18,13 @@ struct RenderRecord {
     std::string device;
     std::string backend;        // "vulkan" or "cpu"
     std::string gridResolution; // gridText(grid), or why there is none
-    RayCounts rays;             // of one frame
-    double renderTimeMs = 0.0;  // best frame
+    std::string gridChoice;     // Grid::choice: what --grid auto chose, and why
+    uint64_t gridCells = 0, gridBytes = 0;
+    // The grid's work per primary ray, counted on the CPU (accel/walk_counts.h); lower bounds
+    // where counting stopped.
+    double gridCellsPerPrimaryRay = 0.0, gridTestsPerPrimaryRay = 0.0;
+    RayCounts rays;            // of one frame
+    double renderTimeMs = 0.0; // best frame
     double renderTimeMedianMs = 0.0;
     double gridBuildMs = 0.0;
     double mraysPerSecond = 0.0;

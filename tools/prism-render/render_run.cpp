@@ -145,6 +145,14 @@ void runRender(const RenderOptions &o) {
     record.renderTimeMs = bestMs;
     record.renderTimeMedianMs = medianMs;
     record.gridBuildMs = buildMs;
+    // The grid's work per primary ray, counted on the CPU; counting stops at 10,000 tests a
+    // ray (a few hundred ms at worst), giving lower bounds.
+    WalkCounts walk = countWalks(scene, grid, double(o.width) / double(o.height), 48, 1e4);
+    record.gridChoice = grid.choice;
+    record.gridCells = grid.cellCount();
+    record.gridBytes = grid.bytes();
+    record.gridCellsPerPrimaryRay = walk.cellsPerRay;
+    record.gridTestsPerPrimaryRay = walk.testsPerRay;
     record.mraysPerSecond = mraysPerSecond;
     record.samplesPerPixel = o.samplesPerPixel;
     record.maxDepth = o.maxDepth;
@@ -152,8 +160,6 @@ void runRender(const RenderOptions &o) {
     writeImage(o.outputPath, out.image, meta);
 
     if (o.stats) {
-        // The grid's work per primary ray, counted on the CPU (a 48-column lattice of rays).
-        WalkCounts walk = countWalks(scene, grid, double(o.width) / double(o.height));
         nlohmann::json stats = {
             {"scene", o.scenePath.string()},
             {"backend", o.backend == Backend::Cpu ? "cpu" : "vulkan"},
@@ -172,6 +178,7 @@ void runRender(const RenderOptions &o) {
             {"grid_choice", grid.choice},
             {"grid_cells_per_primary_ray", walk.cellsPerRay},
             {"grid_tests_per_primary_ray", walk.testsPerRay},
+            {"grid_counts_stopped", walk.stopped},
             {"load_ms", loadMs},
             {"build_ms", buildMs},
             {"trace_ms", bestMs},

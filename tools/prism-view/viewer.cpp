@@ -339,6 +339,9 @@ void Viewer::saveScreenshot(const std::filesystem::path &base) {
     record.renderTimeMs = accumulationMs_;
     record.renderTimeMedianMs = accumulationMs_;
     record.gridBuildMs = gridBuildMs_;
+    record.gridChoice = grid_.choice;
+    record.gridCells = grid_.cellCount();
+    record.gridBytes = grid_.bytes();
     record.mraysPerSecond =
         accumulationMs_ > 0.0 ? double(accumulation.rays.total()) / (accumulationMs_ * 1e3) : 0.0;
     record.samplesPerPixel = samples_;
