@@ -52,7 +52,7 @@ bool hasZeroArea(const glm::vec3 &p0, const glm::vec3 &p1, const glm::vec3 &p2) 
 }
 
 MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &request,
-                                      Scene &scene, TextureCache &textures) {
+                                      Scene &scene, TextureCache &textures, uint64_t maxTriangles) {
     std::vector<uint32_t> slotMaterial;
     if (!request.namedMaterial)
         slotMaterial = slotMaterials(model, request, scene, textures);
@@ -92,6 +92,7 @@ MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &
             if (!t.hasUVs)
                 t.uv[0] = t.uv[1] = t.uv[2] = glm::vec2(0.0f);
             t.material = material;
+            checkTriangleLimit(scene.triangles.size() + 1, maxTriangles);
             scene.triangles.push_back(t);
             ++result.triangles;
         }

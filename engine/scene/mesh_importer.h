@@ -32,9 +32,9 @@ class MeshImporter {
 public:
     // Appends the model's triangles (and the MTL materials and textures they use) to `scene`;
     // MTL problems become warnings. Throws LineError if the transform makes a vertex
-    // non-finite.
+    // non-finite, or the scene would hold more than maxTriangles triangles.
     MeshImportResult import(const ObjModel &model, const MeshRequest &request, Scene &scene,
-                            TextureCache &textures);
+                            TextureCache &textures, uint64_t maxTriangles);
 
 private:
     struct LoadedLibrary {

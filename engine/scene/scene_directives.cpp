@@ -71,6 +71,7 @@ void addTriangle(SceneBuilder &builder, glm::vec3 a, glm::vec3 b, glm::vec3 c, u
     t.p[1] = b;
     t.p[2] = c;
     t.material = material;
+    checkTriangleLimit(builder.scene.triangles.size() + 1, builder.limits.maxTriangles);
     builder.scene.triangles.push_back(t);
 }
 
@@ -267,8 +268,8 @@ void mesh(SceneBuilder &builder, const DirectiveArgs &args) {
     ObjModel model = parseObj(text, displayPath(request.objPath));
     builder.scene.warnings.insert(builder.scene.warnings.end(), model.warnings.begin(),
                                   model.warnings.end());
-    MeshImportResult result =
-        builder.meshes.import(model, request, builder.scene, builder.textures);
+    MeshImportResult result = builder.meshes.import(model, request, builder.scene, builder.textures,
+                                                    builder.limits.maxTriangles);
     warnDropped(builder, int(result.degenerateDropped),
                 " in '" + displayPath(request.objPath) + "'");
 }

@@ -5,12 +5,13 @@
 
 namespace prism {
 
-Scene loadScene(const std::filesystem::path &path) {
-    return parseSceneText(readTextFile(path, "scene file"), path);
+Scene loadScene(const std::filesystem::path &path, const SceneLimits &limits) {
+    return parseSceneText(readTextFile(path, "scene file"), path, limits);
 }
 
-Scene parseScene(std::string_view text, const std::filesystem::path &virtualPath) {
-    return parseSceneText(text, virtualPath);
+Scene parseScene(std::string_view text, const std::filesystem::path &virtualPath,
+                 const SceneLimits &limits) {
+    return parseSceneText(text, virtualPath, limits);
 }
 
 } // namespace prism

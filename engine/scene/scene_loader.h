@@ -1,6 +1,7 @@
 #pragma once
 // Loading a scene: a .scene file (format v1, docs/scene-format.md) plus the OBJ, MTL and image
 // files it names. Any problem throws; a scene is either loaded completely or not at all.
+#include <cstdint>
 #include <filesystem>
 #include <string_view>
 
@@ -8,12 +9,22 @@
 
 namespace prism {
 
+// What one scene may hold, so that no file can make Prism allocate without bound (a scene can
+// name one large OBJ file any number of times). Textures have their own limit
+// (scene/texture_loader.h). Tests lower the limits to reach them.
+struct SceneLimits {
+    // 2^25 triangles: ~3.5 GB on the host, 1.5 GiB of vertices on the GPU.
+    uint64_t maxTriangles = uint64_t(1) << 25;
+};
+
 // Reads and parses `path`. Throws prism::FileError ("FILE:LINE: what is wrong") for errors in
-// the scene or the files it names, prism::Error when `path` itself cannot be read.
-Scene loadScene(const std::filesystem::path &path);
+// the scene or the files it names, a scene over `limits` among them, prism::Error when `path`
+// itself cannot be read.
+Scene loadScene(const std::filesystem::path &path, const SceneLimits &limits = {});
 
 // Parses scene text as if it had been read from `virtualPath` (used in messages); relative
 // paths in it resolve against virtualPath's directory. Same errors as loadScene.
-Scene parseScene(std::string_view text, const std::filesystem::path &virtualPath);
+Scene parseScene(std::string_view text, const std::filesystem::path &virtualPath,
+                 const SceneLimits &limits = {});
 
 } // namespace prism

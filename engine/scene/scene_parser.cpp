@@ -10,8 +10,10 @@ void SceneBuilder::warn(const std::string &message) {
     scene.warnings.push_back(warningAt(fileName, line, message));
 }
 
-Scene parseSceneText(std::string_view text, const std::filesystem::path &virtualPath) {
+Scene parseSceneText(std::string_view text, const std::filesystem::path &virtualPath,
+                     const SceneLimits &limits) {
     SceneBuilder builder;
+    builder.limits = limits;
     builder.fileName = virtualPath.generic_string();
     builder.baseDir = virtualPath.parent_path();
     builder.scene.materials.push_back(Material{"default"});

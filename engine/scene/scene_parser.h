@@ -10,6 +10,7 @@
 
 #include "scene/mesh_importer.h"
 #include "scene/scene.h"
+#include "scene/scene_loader.h"
 #include "scene/texture_loader.h"
 #include "scene/tokenizer.h"
 
@@ -19,6 +20,7 @@ struct SceneBuilder {
     std::string fileName;          // as shown in messages
     std::filesystem::path baseDir; // relative paths resolve here
     int line = 0;                  // the line being parsed
+    SceneLimits limits;
 
     Scene scene;
     // Names `use`, `sphere ... NAME` etc. may refer to: `default` and `material` lines only
@@ -40,6 +42,7 @@ struct SceneBuilder {
 void applyDirective(SceneBuilder &builder, std::span<const Token> tokens);
 
 // The parse behind parseScene (scene_loader.h).
-Scene parseSceneText(std::string_view text, const std::filesystem::path &virtualPath);
+Scene parseSceneText(std::string_view text, const std::filesystem::path &virtualPath,
+                     const SceneLimits &limits);
 
 } // namespace prism

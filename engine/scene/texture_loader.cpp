@@ -75,6 +75,12 @@ Texture readTexture(const std::filesystem::path &path) {
     const OIIO::ImageSpec &spec = in->spec();
     if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1)
         failTexture(path, "not a 2D image");
+    uint64_t pixels = uint64_t(spec.width) * uint64_t(spec.height);
+    if (pixels > kMaxTexturePixels || spec.nchannels > 64)
+        failTexture(
+            path, std::to_string(spec.width) + " x " + std::to_string(spec.height) + " pixels of " +
+                      std::to_string(spec.nchannels) + " channels is more than a texture may be (" +
+                      std::to_string(kMaxTexturePixels) + " pixels, 8192 x 8192, and 64 channels)");
 
     Texture texture;
     texture.path = displayPath(path);

@@ -9,10 +9,15 @@
 
 namespace prism {
 
+// The largest texture, in pixels (8192 x 8192): each is 16 bytes on the host and on the GPU,
+// and an image header can claim any size, so a file is refused before its texels are
+// allocated rather than making Prism allocate without bound.
+constexpr uint64_t kMaxTexturePixels = uint64_t(1) << 26;
+
 // Reads an image as a Texture: 8- and 16-bit images are sRGB-decoded (exact sRGB EOTF, alpha
 // left linear), float images are taken as they are; grey, grey+alpha, RGB and RGBA become RGBA
 // (alpha 1 where absent). Row 0 is the image's top row. Throws prism::Error
-// ("cannot read texture 'PATH': reason").
+// ("cannot read texture 'PATH': reason"), also for an image over kMaxTexturePixels.
 Texture readTexture(const std::filesystem::path &path);
 
 // sRGB-encoded value in [0, 1] to linear (IEC 61966-2-1 EOTF).

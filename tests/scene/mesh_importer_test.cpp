@@ -13,6 +13,7 @@ namespace prism {
 namespace {
 
 using test::allWarnings;
+using test::expectFileError;
 using test::TempDir;
 
 const char *kTriangle = "v 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n";
@@ -95,6 +96,26 @@ TEST(MeshImporter, FacesNamingMissingNormalsLoadWithAWarning) {
     EXPECT_NE(scene.warnings[0].find("n.obj:6: warning: face normal index 1 is out of range"),
               std::string::npos)
         << scene.warnings[0];
+}
+
+// A scene may name one OBJ any number of times; SceneLimits::maxTriangles stops it at the
+// line that would go over, before the triangles are allocated (lowered here to reach it).
+TEST(MeshImporter, TheTriangleLimitStopsTheLineThatWouldPassIt) {
+    TempDir dir;
+    dir.write("t.obj", kTriangle);
+    SceneLimits limits;
+    limits.maxTriangles = 3;
+    std::string three = "mesh t.obj\nmesh t.obj translate 1 0 0\nmesh t.obj translate 2 0 0\n";
+    EXPECT_EQ(loadScene(dir.write("ok.scene", three), limits).triangles.size(), 3u);
+    expectFileError([&] { loadScene(dir.write("over.scene", three + "mesh t.obj\n"), limits); },
+                    (dir.path() / "over.scene").string(), 4, "more than 3 triangles, the limit");
+    // Triangles written in the scene itself count the same.
+    expectFileError(
+        [&] {
+            parseScene("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3\nf 1 2 3\nf 1 2 3\n",
+                       dir.path() / "inline.scene", limits);
+        },
+        (dir.path() / "inline.scene").string(), 7, "more than 3 triangles");
 }
 
 TEST(MeshImporter, ZeroAreaTrianglesAreDroppedAndCountedInAWarning) {

@@ -95,6 +95,22 @@ TEST(TextureLoader, FloatImagesAreTakenAsTheyAre) {
     EXPECT_EQ(t.texels[1], glm::vec4(0.25f, 0.0f, 7.5f, 1.0f));
 }
 
+// An image header can claim any size (here a PPM header alone, 10000 x 10000): it is refused
+// by the limit before any texel is allocated.
+TEST(TextureLoader, HugeImagesAreRefusedByTheLimit) {
+    TempDir dir;
+    dir.write("huge.ppm", "P6\n10000 10000\n255\n");
+    try {
+        readTexture(dir.path() / "huge.ppm");
+        ADD_FAILURE() << "a 10000 x 10000 texture was accepted";
+    } catch (const Error &e) {
+        std::string message = e.what();
+        EXPECT_NE(message.find("huge.ppm"), std::string::npos) << message;
+        EXPECT_NE(message.find("10000 x 10000 pixels"), std::string::npos) << message;
+        EXPECT_NE(message.find("8192 x 8192"), std::string::npos) << message;
+    }
+}
+
 TEST(TextureLoader, UnreadableImagesThrowWithThePath) {
     TempDir dir;
     dir.write("text.png", "not an image");
