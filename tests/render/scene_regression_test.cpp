@@ -1,10 +1,16 @@
 // Image regression: every shipped scene rendered by the shader (lavapipe, validation on) must
 // match the double-precision CPU reference at a small size.
 //
-// Tolerance, and why: the shader works in float, the reference in double. Where a pixel's ray
-// grazes a silhouette or a shadow boundary the two can legitimately pick different sides, so
-// up to 1% of pixels may differ by more than 0.02 (in linear radiance); everywhere else the
-// difference is rounding, so the mean absolute difference must stay under 0.002.
+// Tolerance, from a measurement (2026-12-01, this suite at 64x48): on every shipped scene no
+// pixel differs by more than 0.02 in linear radiance, the largest difference is 0.00044
+// (rand5000; 0.00025 grid, under 0.0001 elsewhere) and the mean under 0.000001. The shader
+// works in float and the reference in double, so where a ray grazes a silhouette or a shadow
+// boundary another CPU's float rounding (lavapipe's code follows the CPU's features) may pick
+// the other side: 2 such pixels are allowed, each as wrong as it likes (two pixels off by 1 in
+// every channel make a mean of 0.00065); a third, or a mean over 0.001, fails. A wrongly shaded
+// object of 3 pixels or more cannot pass: a Schlick exponent of 4 instead of 5, planted in the
+// shader, fails 6 of the 10 scenes (3-17 pixels), all of which the old bound (1% of pixels,
+// mean 0.002) let through.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -21,8 +27,8 @@ namespace prism::test {
 namespace {
 
 constexpr double kPixelThreshold = 0.02;
-constexpr double kMaxDifferingFraction = 0.01;
-constexpr double kMaxMeanAbsolute = 0.002;
+constexpr size_t kMaxDifferingPixels = 2;
+constexpr double kMaxMeanAbsolute = 0.001;
 
 class SceneRegression : public GpuTest, public ::testing::WithParamInterface<std::string> {};
 
@@ -43,7 +49,7 @@ TEST_P(SceneRegression, ShaderMatchesCpuReference) {
 
     ImageDifference d = compareImages(gpu.image.rgba, cpu, kPixelThreshold);
     EXPECT_EQ(d.nonFinite, 0u);
-    EXPECT_LE(d.differingFraction(), kMaxDifferingFraction) << describe(d);
+    EXPECT_LE(d.differing, kMaxDifferingPixels) << describe(d);
     EXPECT_LE(d.meanAbsolute, kMaxMeanAbsolute) << describe(d);
     // Both count the rays they trace; the counts agree up to the differing pixels.
     EXPECT_EQ(gpu.frame.rays.primary, cpuRays.primary);
