@@ -147,7 +147,9 @@ TEST_F(Stability, SharedEdgesOfATriangleFanNeverCrack) {
 }
 
 // Rays that skim a plane towards the horizon and sphere silhouettes: finite values, no
-// self-hits, and agreement with the reference.
+// self-hits, and agreement with the reference. Measured (2026-12-01): no pixel over 0.02,
+// largest difference 0.00004. As in the scene regression test, 2 pixels may flip at a
+// silhouette on another CPU's float rounding; a third fails (the bound was 2% of pixels).
 TEST_F(Stability, GrazingRaysOnPlanesAndSpheres) {
     Scene scene = stabilityScene();
     scene.camera.eye = {0.0f, 0.001f, 12.0f}; // a millimetre above an infinite floor
@@ -157,7 +159,7 @@ TEST_F(Stability, GrazingRaysOnPlanesAndSpheres) {
     std::vector<float> cpu = renderCpu(scene, 64, 48);
     ImageDifference d = compareImages(gpu.rgba, cpu, 0.02);
     EXPECT_EQ(d.nonFinite, 0u);
-    EXPECT_LE(d.differingFraction(), 0.02) << describe(d);
+    EXPECT_LE(d.differing, 2u) << describe(d);
 }
 
 // The grid changes speed, never the picture: grid off, auto and fixed resolutions agree.
