@@ -2,10 +2,12 @@
 // images the scene regression test holds to the CPU reference, and against the reference itself
 // where one regular grid fails: a dense cluster in a large room.
 //
-// Tolerance, and why: the two walks test primitives in different orders, so where two surfaces
-// meet at the same float distance they may keep different ones; the image test's bounds (at
-// most 1% of pixels off by more than 0.02, mean difference under 0.002) allow for that and for
-// nothing more.
+// Tolerance, from a measurement (2026-12-01, 64x48): the adaptive grid's images equal the
+// regular grid's on every shipped scene (largest difference 0), and the cluster's match the CPU
+// reference to 0.000007. The two walks test primitives in different orders, so where two
+// surfaces meet at the same float distance they may keep different ones: 2 pixels may differ
+// (two pixels off by 1 in every channel make a mean of 0.00065); a third, or a mean over 0.001,
+// fails. (The bound was 1% of pixels and a mean of 0.002.)
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -23,13 +25,13 @@ namespace prism::test {
 namespace {
 
 constexpr double kPixelThreshold = 0.02;
-constexpr double kMaxDifferingFraction = 0.01;
-constexpr double kMaxMeanAbsolute = 0.002;
+constexpr size_t kMaxDifferingPixels = 2;
+constexpr double kMaxMeanAbsolute = 0.001;
 
 void expectClose(const std::vector<float> &a, const std::vector<float> &b) {
     ImageDifference d = compareImages(a, b, kPixelThreshold);
     EXPECT_EQ(d.nonFinite, 0u);
-    EXPECT_LE(d.differingFraction(), kMaxDifferingFraction) << describe(d);
+    EXPECT_LE(d.differing, kMaxDifferingPixels) << describe(d);
     EXPECT_LE(d.meanAbsolute, kMaxMeanAbsolute) << describe(d);
 }
 
