@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <limits>
+#include <string>
 
 #include "accel/grid_walk.h"
+#include "core/error.h"
 #include "reference/camera_model.h"
 #include "reference/intersect_reference.h"
 #include "scene/camera_frame.h"
@@ -20,10 +22,14 @@ bool intersectId(const Scene &scene, const PrimitiveIds &ids, uint32_t id, const
         const Sphere &s = scene.spheres[d.index];
         return reference::intersectSphere(ray, glm::dvec3(s.center), double(s.radius), tMax, t);
     }
-    const Triangle &tri = scene.triangles[d.index];
-    glm::dvec2 b12;
-    return reference::intersectTriangle(ray, wray, glm::dvec3(tri.p[0]), glm::dvec3(tri.p[1]),
-                                        glm::dvec3(tri.p[2]), tMax, t, b12);
+    if (d.kind == gpu::kKindTriangle) {
+        const Triangle &tri = scene.triangles[d.index];
+        glm::dvec2 b12;
+        return reference::intersectTriangle(ray, wray, glm::dvec3(tri.p[0]), glm::dvec3(tri.p[1]),
+                                            glm::dvec3(tri.p[2]), tMax, t, b12);
+    }
+    // A new finite kind needs its test here (docs/design.md, "Adding a primitive").
+    throw Error("countWalks has no test for primitive kind " + std::to_string(d.kind));
 }
 
 } // namespace
