@@ -195,15 +195,15 @@ private:
                          const std::vector<std::vector<uint32_t>> &childRefs) {
         glm::ivec3 size = parts.size();
         std::vector<bool> taken(childRefs.size());
-        auto free = [&](glm::ivec3 c) {
+        auto untaken = [&](glm::ivec3 c) { // an empty part not yet in a merged cell
             uint32_t i = uint32_t(c.x + size.x * (c.y + size.y * c.z));
             return childRefs[i].empty() && !taken[i];
         };
-        auto freeBox = [&](glm::ivec3 lo, glm::ivec3 hi) {
+        auto untakenBox = [&](glm::ivec3 lo, glm::ivec3 hi) {
             for (int z = lo.z; z < hi.z; ++z)
                 for (int y = lo.y; y < hi.y; ++y)
                     for (int x = lo.x; x < hi.x; ++x)
-                        if (!free({x, y, z}))
+                        if (!untaken({x, y, z}))
                             return false;
             return true;
         };
@@ -211,14 +211,14 @@ private:
             for (int y = 0; y < size.y; ++y)
                 for (int x = 0; x < size.x; ++x) {
                     glm::ivec3 lo(x, y, z), hi = lo + 1;
-                    if (!free(lo))
+                    if (!untaken(lo))
                         continue;
                     for (int axis = 0; axis < 3; ++axis)
                         for (;;) {
                             glm::ivec3 layerLo = lo, layerHi = hi;
                             layerLo[axis] = hi[axis];
                             layerHi[axis] = hi[axis] + 1;
-                            if (hi[axis] >= size[axis] || !freeBox(layerLo, layerHi))
+                            if (hi[axis] >= size[axis] || !untakenBox(layerLo, layerHi))
                                 break;
                             ++hi[axis];
                         }

@@ -22,12 +22,13 @@ std::string describe(const char *name, const WalkCounts &counts, double cost) {
     return text;
 }
 
-} // namespace
-
+// The tracer's work per ray, in primitive tests.
 double walkCost(const WalkCounts &counts, bool adaptive) {
     return counts.testsPerRay +
            counts.cellsPerRay * (adaptive ? kAdaptiveStepCost : kRegularStepCost);
 }
+
+} // namespace
 
 Grid chooseGrid(const Scene &scene, const std::function<Grid(GridOptions::Mode)> &build) {
     Grid regular = build(GridOptions::Mode::Regular);

@@ -25,8 +25,6 @@ constexpr double kConsiderAdaptiveCost = 8.0;
 // The adaptive grid is chosen only when it is estimated at least this much cheaper.
 constexpr double kAdaptiveMargin = 0.9;
 
-double walkCost(const WalkCounts &counts, bool adaptive);
-
 // Builds the regular grid with build(Regular); where its cost calls for it, the adaptive one with
 // build(Adaptive), and returns the cheaper, with Grid::choice saying why.
 Grid chooseGrid(const Scene &scene, const std::function<Grid(GridOptions::Mode)> &build);

@@ -129,28 +129,27 @@ void RayTracer::recordSamples(VkCommandBuffer commands, const Camera &camera, ui
     pipeline_->bind(commands);
     for (uint32_t s = firstSample; s < firstSample + count; ++s) {
         params.image.z = s;
-        vkCmdPushConstants(commands, pipeline_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
-                           sizeof(params), &params);
-        vkCmdDispatch(commands, (width_ + 7) / 8, (height_ + 7) / 8, 1);
-        // Each sample reads the sum the previous one wrote.
-        vk::imageBarrier(commands, accum_.handle(), VK_IMAGE_LAYOUT_GENERAL,
-                         VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                         VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+        recordDispatch(commands, params, (width_ + 7) / 8, (height_ + 7) / 8);
     }
+}
+
+void RayTracer::recordDispatch(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
+                               uint32_t groupsX, uint32_t groupsY) {
+    vkCmdPushConstants(commands, pipeline_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                       sizeof(params), &params);
+    vkCmdDispatch(commands, groupsX, groupsY, 1);
+    // Each sample reads the sum the previous one wrote.
+    vk::imageBarrier(commands, accum_.handle(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }
 
 void RayTracer::compile(const Camera &camera) {
     gpu::GpuFrameParams params = makeFrameParams(camera, width_, height_, 1, features_.maxDepth);
     runner_.run([&](VkCommandBuffer commands) {
         pipeline_->bind(commands);
-        vkCmdPushConstants(commands, pipeline_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
-                           sizeof(params), &params);
-        vkCmdDispatch(commands, 1, 1, 1);
-        vk::imageBarrier(commands, accum_.handle(), VK_IMAGE_LAYOUT_GENERAL,
-                         VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                         VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+        recordDispatch(commands, params, 1, 1);
     });
 }
 

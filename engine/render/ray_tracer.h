@@ -72,6 +72,10 @@ public:
     uint32_t height() const { return height_; }
 
 private:
+    // One dispatch of groupsX x groupsY 8x8 tiles with `params`, then the barrier that lets the
+    // next dispatch read the accumulation it wrote.
+    void recordDispatch(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
+                        uint32_t groupsX, uint32_t groupsY);
     void createImages(uint32_t width, uint32_t height);
     void bindImages();
 

@@ -5,9 +5,7 @@
 
 namespace prism {
 
-struct EmbreeBaseline::State {
-    EmbreeBuild build;
-};
+struct EmbreeBaseline::State {};
 
 bool embreeAvailable() {
     return false;
@@ -20,12 +18,13 @@ EmbreeBaseline::EmbreeBaseline(const Scene &, uint32_t, uint32_t) {
 
 EmbreeBaseline::~EmbreeBaseline() = default;
 
+// Never reached: there is no object to call them on, construction throws.
 const EmbreeBuild &EmbreeBaseline::build() const {
-    return state_->build; // never called: construction throws
+    throw Error("built without Embree");
 }
 
 EmbreeFrame EmbreeBaseline::traceFrame() {
-    return {};
+    throw Error("built without Embree");
 }
 
 } // namespace prism

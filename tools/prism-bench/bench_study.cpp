@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "core/median.h"
 #include "core/timer.h"
 #include "embree_baseline.h"
 #include "render/ray_tracer.h"
@@ -12,12 +13,7 @@
 namespace prism {
 
 double BenchResult::medianMs() const {
-    if (frameMs.empty())
-        return 0.0;
-    std::vector<double> sorted = frameMs;
-    std::sort(sorted.begin(), sorted.end());
-    size_t n = sorted.size();
-    return n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    return median(frameMs);
 }
 
 double BenchResult::mraysPerSecond() const {

@@ -15,18 +15,13 @@
 #include "accel/grid.h"
 #include "accel/walk_counts.h"
 #include "core/error.h"
+#include "core/median.h"
 #include "core/timer.h"
 #include "embree_baseline.h"
 #include "scene/scene_loader.h"
 
 namespace prism {
 namespace {
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 struct Row {
     std::string scene, structure, layout;
@@ -94,12 +89,14 @@ void printTable(const std::vector<Row> &rows, uint32_t runs) {
             if (e.scene == r.scene && e.structure == "embree")
                 embree = e.buildMs;
         std::string grid[6]; // cells .. tests/ray: blank for Embree's row
-        if (r.structure != "embree")
-            grid[0] = std::to_string(r.cells),
-            grid[1] = std::to_string(r.bytes / std::max<uint64_t>(1, r.primitives)),
-            grid[2] = std::to_string(r.maxPerCell), grid[3] = std::to_string(r.depth),
-            grid[4] = number(r.walk.cellsPerRay, "%.2f"),
+        if (r.structure != "embree") {
+            grid[0] = std::to_string(r.cells);
+            grid[1] = std::to_string(r.bytes / std::max<uint64_t>(1, r.primitives));
+            grid[2] = std::to_string(r.maxPerCell);
+            grid[3] = std::to_string(r.depth);
+            grid[4] = number(r.walk.cellsPerRay, "%.2f");
             grid[5] = number(r.walk.testsPerRay, "%.2f");
+        }
         std::string ratio = embree > 0.0 ? number(r.buildMs / embree, "%.2fx") : "";
         std::printf("| %s | %llu | %s | %s | %s | %s | %s | %s | %s | %s | %.1f | %s |\n",
                     r.scene.c_str(), (unsigned long long)r.primitives, r.structure.c_str(),
@@ -154,8 +151,10 @@ int main(int argc, char **argv) {
     try {
         std::vector<std::string> grids;
         std::stringstream list(gridList);
-        for (std::string g; std::getline(list, g, ',');)
-            parseGridOption(g), grids.push_back(g); // refuse a bad value before any work
+        for (std::string g; std::getline(list, g, ',');) {
+            parseGridOption(g); // refuse a bad value before any work
+            grids.push_back(g);
+        }
         std::vector<Row> rows;
         for (const std::string &path : scenes) {
             std::string name = std::filesystem::path(path).stem().string();
