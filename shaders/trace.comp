@@ -4,7 +4,6 @@
 // with an explicit stack. Same semantics as the CPU reference (engine/reference).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
-#extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
@@ -163,13 +162,13 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
 }
 
 // One atomic per subgroup and counter: the lanes' counts are summed first.
-void addCounts(uint primary, uint shadow, uint secondary, uint overBudget) {
-    uvec4 total = subgroupAdd(uvec4(primary, shadow, secondary, overBudget));
+void addCounts(uint primary, uint shadow, uint secondary, uint loopCut) {
+    uvec4 total = subgroupAdd(uvec4(primary, shadow, secondary, loopCut));
     if (subgroupElect()) {
         if (total.x != 0u) atomicAdd(stats.primaryRays, uint64_t(total.x));
         if (total.y != 0u) atomicAdd(stats.shadowRays, uint64_t(total.y));
         if (total.z != 0u) atomicAdd(stats.secondaryRays, uint64_t(total.z));
-        if (total.w != 0u) atomicAdd(stats.overBudgetPixels, uint64_t(total.w));
+        if (total.w != 0u) atomicAdd(stats.loopCutPixels, uint64_t(total.w));
     }
 }
 

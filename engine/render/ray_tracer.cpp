@@ -95,7 +95,7 @@ FrameResult RayTracer::decodeCounters(const void *snapshot) {
     result.rays.primary = stats.primaryRays;
     result.rays.shadow = stats.shadowRays;
     result.rays.secondary = stats.secondaryRays;
-    result.overBudgetPixels = stats.overBudgetPixels;
+    result.loopCutPixels = stats.loopCutPixels;
     return result;
 }
 
@@ -182,7 +182,7 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
     }
     FrameResult counted = decodeCounters(stats_.mapped());
     result.rays = counted.rays;
-    result.overBudgetPixels = counted.overBudgetPixels;
+    result.loopCutPixels = counted.loopCutPixels;
     return result;
 }
 

@@ -21,7 +21,7 @@ namespace prism {
 struct FrameResult {
     double gpuMs = 0.0; // from GPU timestamps, all sample dispatches of the frame
     RayCounts rays;
-    uint64_t overBudgetPixels = 0;
+    uint64_t loopCutPixels = 0;
 };
 
 struct TracedImage {

@@ -167,7 +167,7 @@ struct GpuStats {
     uint64_t primaryRays;
     uint64_t shadowRays;
     uint64_t secondaryRays;
-    uint64_t overBudgetPixels; // pixels lavapipe's loop limit cut short (loop_limit.glsl)
+    uint64_t loopCutPixels; // pixels lavapipe's loop limit cut short (loop_limit.glsl)
 };
 
 // Per-frame parameters (push constants, 128 bytes at most).
@@ -217,7 +217,7 @@ static_assert(offsetof(GpuMaterial, optics) == 32);
 static_assert(sizeof(GpuLight) == 32);
 static_assert(sizeof(GpuTexture) == 16);
 static_assert(sizeof(GpuStats) == 32);
-static_assert(offsetof(GpuStats, overBudgetPixels) == 24);
+static_assert(offsetof(GpuStats, loopCutPixels) == 24);
 static_assert(sizeof(GpuFrameParams) == 96);
 static_assert(offsetof(GpuFrameParams, image) == 64);
 static_assert(sizeof(GpuFrameParams) <= 128, "push constants are limited to 128 bytes");

@@ -44,7 +44,7 @@ TEST_P(AdaptiveGridRender, MatchesTheRegularGrid) {
         renderGpu(context(), scene, width, height, spp, depth, parseGridOption("regular"));
     GpuRender adaptive =
         renderGpu(context(), scene, width, height, spp, depth, parseGridOption("adaptive"));
-    EXPECT_EQ(adaptive.frame.overBudgetPixels, 0u);
+    EXPECT_EQ(adaptive.frame.loopCutPixels, 0u);
     expectClose(adaptive.image.rgba, regular.image.rgba);
     EXPECT_EQ(adaptive.frame.rays.primary, regular.frame.rays.primary);
     EXPECT_NEAR(double(adaptive.frame.rays.total()), double(regular.frame.rays.total()),
@@ -65,7 +65,7 @@ protected:
         scene.camera.look = {0.0f, 0.0f, 0.0f};
         scene.lights.push_back(Light{{100.0f, 300.0f, -200.0f}, glm::vec3(1.0f), 0.0f});
         GpuRender gpu = renderGpu(context(), scene, 64, 48, 1, 2, parseGridOption(grid));
-        EXPECT_EQ(gpu.frame.overBudgetPixels, 0u);
+        EXPECT_EQ(gpu.frame.loopCutPixels, 0u);
         expectClose(gpu.image.rgba, renderCpu(scene, 64, 48, 1, 2));
     }
 };
@@ -87,7 +87,7 @@ TEST_F(AdaptiveGridCluster, TeapotInTheStadiumMatchesTheCpuReference) {
         loadScene(std::filesystem::path(PRISM_SCENES_DIR) / "studies" / "teapot-in-stadium.scene");
     const uint32_t width = 256, height = 192;
     GpuRender gpu = renderGpu(context(), scene, width, height, 1, 1, parseGridOption("adaptive"));
-    EXPECT_EQ(gpu.frame.overBudgetPixels, 0u);
+    EXPECT_EQ(gpu.frame.loopCutPixels, 0u);
     ImageDifference d =
         compareImages(gpu.image.rgba, renderCpu(scene, width, height, 1, 1), kPixelThreshold);
     EXPECT_EQ(d.differing, 0u) << describe(d);

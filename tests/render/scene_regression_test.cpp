@@ -43,7 +43,7 @@ TEST_P(SceneRegression, ShaderMatchesCpuReference) {
     const uint32_t width = 64, height = 48;
 
     GpuRender gpu = renderGpu(context(), scene, width, height, spp);
-    EXPECT_EQ(gpu.frame.overBudgetPixels, 0u);
+    EXPECT_EQ(gpu.frame.loopCutPixels, 0u);
     RayCounts cpuRays;
     std::vector<float> cpu = renderCpu(scene, width, height, spp, 5, &cpuRays);
 

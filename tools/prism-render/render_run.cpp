@@ -53,8 +53,8 @@ RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const G
                                 : "frame " + std::to_string(frame) + "/" + std::to_string(o.repeat);
         FrameResult result = tracer.renderFrame(scene.camera, frame == 0 ? 1u : o.samplesPerPixel,
                                                 [&](double f) { progress.update(label, f); });
-        if (result.overBudgetPixels > 0)
-            throw Error(std::to_string(result.overBudgetPixels) +
+        if (result.loopCutPixels > 0)
+            throw Error(std::to_string(result.loopCutPixels) +
                         " pixels needed more shader loop iterations than " + out.device +
                         " runs (lavapipe stops a shader after 65,535), so the image would be "
                         "wrong; use a finer grid (--grid auto), fewer primitives or a lower "

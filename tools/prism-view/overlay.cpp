@@ -109,10 +109,10 @@ bool Overlay::build(const OverlayStats &s, FeatureToggles &toggles, bool visible
         ImGui::Checkbox("refraction", &toggles.refraction);
         ImGui::SameLine();
         ImGui::Checkbox("grid", &toggles.grid);
-        if (s.overBudgetPixels > 0)
+        if (s.loopCutPixels > 0)
             ImGui::TextColored(ImVec4(1.0f, 0.4f, 1.0f, 1.0f),
                                "%llu pixels cut by the loop limit (magenta)",
-                               static_cast<unsigned long long>(s.overBudgetPixels));
+                               static_cast<unsigned long long>(s.loopCutPixels));
         if (!s.sceneError.empty()) {
             ImGui::Separator();
             ImGui::PushTextWrapPos(ImGui::GetFontSize() * 36.0f);

@@ -35,7 +35,7 @@ struct OverlayStats {
     uint32_t traceScale = 1;        // > 1: a moving camera's reduced image
     std::string scene;
     std::string sceneError; // FILE:LINE message of the last failed load, else empty
-    uint64_t overBudgetPixels = 0;
+    uint64_t loopCutPixels = 0;
     std::string notice; // e.g. "saved prism-view-....exr"
 };
 

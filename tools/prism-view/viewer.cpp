@@ -41,7 +41,7 @@ FrameResult minus(const FrameResult &a, const FrameResult &b) {
     d.rays.primary = a.rays.primary - b.rays.primary;
     d.rays.shadow = a.rays.shadow - b.rays.shadow;
     d.rays.secondary = a.rays.secondary - b.rays.secondary;
-    d.overBudgetPixels = a.overBudgetPixels - b.overBudgetPixels;
+    d.loopCutPixels = a.loopCutPixels - b.loopCutPixels;
     return d;
 }
 
@@ -323,8 +323,8 @@ void Viewer::saveScreenshot(const std::filesystem::path &base) {
         return;
     }
     FrameResult accumulation = minus(lastCounters_, accumulationBase_);
-    if (accumulation.overBudgetPixels > 0) {
-        notice_ = std::to_string(accumulation.overBudgetPixels) +
+    if (accumulation.loopCutPixels > 0) {
+        notice_ = std::to_string(accumulation.loopCutPixels) +
                   " pixels cut by the loop limit; screenshot not saved";
         std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
         return;
@@ -372,7 +372,7 @@ OverlayStats Viewer::overlayStats() const {
     s.traceScale = traceScale_;
     s.scene = options_.scenePath.filename().string();
     s.sceneError = sceneError_;
-    s.overBudgetPixels = minus(lastCounters_, accumulationBase_).overBudgetPixels;
+    s.loopCutPixels = minus(lastCounters_, accumulationBase_).loopCutPixels;
     s.notice = notice_;
     return s;
 }
