@@ -89,19 +89,12 @@ public:
         uint32_t childShift = sizeShift - split, parts = 1u << split;
         Lattice children = childLattice(voxelMin, sizeShift, split);
         std::vector<std::vector<uint32_t>> childRefs(children.count());
-        size_t fullest = 0;
         CellBinner binner(children);
-        for (uint32_t id : refs) {
-            glm::ivec3 lo, hi;
-            binner.boundsRange(primitives_.bounds(id), lo, hi);
-            for (int z = lo.z; z <= hi.z; ++z)
-                for (int y = lo.y; y <= hi.y; ++y)
-                    for (int x = lo.x; x <= hi.x; ++x) {
-                        std::vector<uint32_t> &list = childRefs[children.local({x, y, z})];
-                        list.push_back(id);
-                        fullest = std::max(fullest, list.size());
-                    }
-        }
+        for (uint32_t id : refs)
+            binner.binBounds(id, primitives_, childRefs);
+        size_t fullest = 0;
+        for (const std::vector<uint32_t> &list : childRefs)
+            fullest = std::max(fullest, list.size());
         // A split that leaves some part with every primitive may still help further down (a
         // small cluster in a big cell), but three in a row mean the primitives cannot be told
         // apart (all in one point, a fan around one vertex): the cell stays whole. This also
@@ -291,14 +284,8 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
     // By bounding box, as every level above the leaves (Splitter::build).
     CellBinner binner(top);
     std::vector<std::vector<uint32_t>> topRefs(top.count());
-    for (uint32_t id = 0; id < primitives.count(); ++id) {
-        glm::ivec3 lo, hi;
-        binner.boundsRange(primitives.bounds(id), lo, hi);
-        for (int z = lo.z; z <= hi.z; ++z)
-            for (int y = lo.y; y <= hi.y; ++y)
-                for (int x = lo.x; x <= hi.x; ++x)
-                    topRefs[top.local({x, y, z})].push_back(id); // ids ascending in a cell
-    }
+    for (uint32_t id = 0; id < primitives.count(); ++id)
+        binner.binBounds(id, primitives, topRefs); // ids ascending in a cell
 
     // Cells and entries at most ~64 per primitive a top cell holds (and a floor for small
     // cells): a safety net on memory and build time, far above what the cost model asks for.
