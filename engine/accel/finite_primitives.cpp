@@ -6,14 +6,14 @@ namespace prism {
 namespace {
 
 Aabb sphereBounds(const Sphere &s) {
-    glm::dvec3 c(s.center), r(double(s.radius));
+    glm::dvec3 c = s.center, r(double(s.radius));
     return {c - r, c + r};
 }
 
 Aabb triangleBounds(const Triangle &t) {
     Aabb b;
-    for (const glm::vec3 &p : t.p)
-        b.grow(glm::dvec3(p));
+    for (const glm::dvec3 &p : t.p)
+        b.grow(p);
     return b;
 }
 
@@ -31,11 +31,10 @@ bool FinitePrimitives::overlapsBox(uint32_t id, const glm::dvec3 &boxMin,
     PrimitiveIds::Decoded p = ids_.decode(id);
     if (p.kind == gpu::kKindSphere) {
         const Sphere &s = scene_.spheres[p.index];
-        return sphereOverlapsBox(glm::dvec3(s.center), double(s.radius), boxMin, boxMax);
+        return sphereOverlapsBox(s.center, double(s.radius), boxMin, boxMax);
     }
     const Triangle &t = scene_.triangles[p.index];
-    return triangleOverlapsBox(glm::dvec3(t.p[0]), glm::dvec3(t.p[1]), glm::dvec3(t.p[2]), boxMin,
-                               boxMax);
+    return triangleOverlapsBox(t.p[0], t.p[1], t.p[2], boxMin, boxMax);
 }
 
 } // namespace prism

@@ -7,6 +7,7 @@
 #include <exception>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -14,6 +15,7 @@
 #include "reference/scene_query.h"
 #include "reference/surface_reference.h"
 #include "reference/trace_reference.h"
+#include "scene/scene_origin.h"
 
 namespace prism {
 namespace {
@@ -91,9 +93,17 @@ glm::dvec3 tracePixelSample(const Scene &scene, const CameraFrame &frame, int px
     return reference::traceRadiance(scene, ray, {pixelIndex, sampleIndex, spp}, maxDepth, rays);
 }
 
-RenderedImage renderReference(const Scene &scene, const RenderSettings &settings,
+RenderedImage renderReference(const Scene &given, const RenderSettings &settings,
                               const std::function<void(double)> &progress) {
-    validate(scene, settings);
+    validate(given, settings);
+    // Ray offsets are relative to |P| (as on the GPU), so the reference too works relative to
+    // the camera; in double the move itself costs nothing measurable (scene_origin.h).
+    std::optional<Scene> moved;
+    if (given.camera.eye != glm::dvec3(0.0)) {
+        moved = given;
+        moveOrigin(*moved, given.camera.eye);
+    }
+    const Scene &scene = moved ? *moved : given;
     RenderedImage image;
     image.width = settings.width;
     image.height = settings.height;

@@ -28,7 +28,9 @@ struct RenderedImage {
     RayCounts rays;
 };
 
-// Renders `scene` through its camera. Pixel index = y * width + x, row 0 at the top.
+// Renders `scene` through its camera, in double precision relative to the camera's eye (so
+// the picture does not depend on where the scene sits). Pixel index = y * width + x, row 0
+// at the top.
 // `progress`, when given, is called from the calling thread with the fraction of rows done.
 // Throws prism::Error for bad settings or a scene that names missing materials or textures.
 RenderedImage renderReference(const Scene &scene, const RenderSettings &settings,

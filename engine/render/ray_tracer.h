@@ -33,6 +33,8 @@ struct TracedImage {
 
 class RayTracer {
 public:
+    // `scene` centred on the camera (scene/scene_origin.h) and `grid` built from it; cameras
+    // given later are in the same coordinates.
     RayTracer(vk::Context &context, const Scene &scene, const Grid &grid, uint32_t width,
               uint32_t height, const TracerOptions &options);
     ~RayTracer();

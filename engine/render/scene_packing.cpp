@@ -34,8 +34,9 @@ PackedScene packScene(const Scene &scene, const Grid &grid) {
         packed.spheres.push_back(
             {glm::vec4(s.center, s.radius), glm::vec4(indexAsFloat(s.material), 0.0f, 0.0f, 0.0f)});
     for (const Plane &p : scene.planes)
-        packed.planes.push_back({glm::vec4(p.normal, glm::dot(p.normal, p.point)),
-                                 glm::vec4(p.point, indexAsFloat(p.material))});
+        packed.planes.push_back(
+            {glm::vec4(p.normal, float(glm::dot(glm::dvec3(p.normal), p.point))),
+             glm::vec4(glm::vec3(p.point), indexAsFloat(p.material))});
 
     // The tracer reads shading data for every triangle hit where the scene has vertex normals or
     // textures (tracer_features.h): then every triangle has its record.

@@ -25,6 +25,8 @@ struct PackedScene {
     std::vector<glm::uvec4> cellBoxes; // adaptive grid only
 };
 
+// Positions become 32-bit floats here: give it a scene centred on the camera
+// (scene/scene_origin.h), with the grid built from that same scene.
 PackedScene packScene(const Scene &scene, const Grid &grid);
 
 } // namespace prism

@@ -22,14 +22,14 @@ bool isReadableFile(const std::filesystem::path &path) {
 }
 
 // Placed vertex positions; a vertex pushed out of float range is an error of the mesh line.
-std::vector<glm::vec3> placePositions(const ObjModel &model, const AffineMap &map) {
-    std::vector<glm::vec3> placed(model.positions.size());
+std::vector<glm::dvec3> placePositions(const ObjModel &model, const AffineMap &map) {
+    std::vector<glm::dvec3> placed(model.positions.size());
     for (size_t i = 0; i < placed.size(); ++i) {
         glm::dvec3 p = map.point(model.positions[i]);
         if (!fitsFloat(p))
             throw LineError("the mesh transform takes vertex " + std::to_string(i + 1) +
                             " out of the range of a 32-bit float");
-        placed[i] = glm::vec3(p);
+        placed[i] = p;
     }
     return placed;
 }
@@ -47,8 +47,8 @@ std::vector<glm::vec3> placeNormals(const ObjModel &model, const AffineMap &map)
 
 } // namespace
 
-bool hasZeroArea(const glm::vec3 &p0, const glm::vec3 &p1, const glm::vec3 &p2) {
-    return glm::cross(p1 - p0, p2 - p0) == glm::vec3(0.0f);
+bool hasZeroArea(const glm::dvec3 &p0, const glm::dvec3 &p1, const glm::dvec3 &p2) {
+    return glm::cross(p1 - p0, p2 - p0) == glm::dvec3(0.0);
 }
 
 MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &request,
@@ -58,7 +58,7 @@ MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &
         slotMaterial = slotMaterials(model, request, scene, textures);
 
     AffineMap map(request.transform);
-    std::vector<glm::vec3> positions = placePositions(model, map);
+    std::vector<glm::dvec3> positions = placePositions(model, map);
     std::vector<glm::vec3> normals = placeNormals(model, map);
 
     MeshImportResult result;

@@ -57,7 +57,8 @@ private:
     std::map<std::string, uint32_t> materialsByKey_; // canonical MTL path + '\n' + name
 };
 
-// True when the triangle has zero area in float arithmetic: (p1 - p0) x (p2 - p0) == 0.
-bool hasZeroArea(const glm::vec3 &p0, const glm::vec3 &p1, const glm::vec3 &p2);
+// True when the triangle has zero area: (p1 - p0) x (p2 - p0) == 0 in double arithmetic (the
+// precision positions are kept in).
+bool hasZeroArea(const glm::dvec3 &p0, const glm::dvec3 &p1, const glm::dvec3 &p2);
 
 } // namespace prism

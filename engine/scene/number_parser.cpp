@@ -1,5 +1,6 @@
 #include "scene/number_parser.h"
 
+#include <cfloat>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -42,6 +43,23 @@ ParsedFloat parseFloat(std::string_view token) {
     }
     if (!std::isfinite(value)) // "nan", "inf", "infinity"
         return {0.0f, NumberProblem::NotFinite};
+    return {value, NumberProblem::None};
+}
+
+ParsedDouble parseDouble(std::string_view token) {
+    // parseFloat does the checking (grammar, finiteness, the float range); the digits are then
+    // read again in double.
+    ParsedFloat checked = parseFloat(token);
+    if (!checked.ok())
+        return {0.0, checked.problem};
+    if (checked.value == 0.0f) // includes a float underflow, which the rules round to 0
+        return {double(checked.value), NumberProblem::None};
+    std::string_view digits = dropPlusSign(token);
+    double value = 0.0;
+    auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value,
+                                     std::chars_format::general);
+    if (ec != std::errc() || end != digits.data() + digits.size() || std::fabs(value) > FLT_MAX)
+        return {double(checked.value), NumberProblem::None}; // a hair above FLT_MAX: as a float
     return {value, NumberProblem::None};
 }
 

@@ -9,9 +9,11 @@
 
 namespace prism {
 
+// Positions are double on the host so that a scene far from its file's origin loses nothing
+// before it is centred on the camera (scene/scene_origin.h); directions and colours are float.
 struct Camera {
-    glm::vec3 eye{0.0f, 0.0f, 5.0f};
-    glm::vec3 look{0.0f, 0.0f, 0.0f};
+    glm::dvec3 eye{0.0, 0.0, 5.0};
+    glm::dvec3 look{0.0, 0.0, 0.0};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
     float fovDegrees = 60.0f; // vertical field of view (perspective only)
     float orthoHeight = 0.0f; // > 0: parallel projection with an image plane this tall
@@ -19,7 +21,7 @@ struct Camera {
 };
 
 struct Light {
-    glm::vec3 position{0.0f};
+    glm::dvec3 position{0.0};
     glm::vec3 color{1.0f};
     float radius = 0.0f; // > 0: spherical area light (soft shadows)
 };
@@ -48,19 +50,19 @@ struct Material {
 };
 
 struct Sphere {
-    glm::vec3 center{0.0f};
+    glm::dvec3 center{0.0};
     float radius = 1.0f;
     uint32_t material = 0;
 };
 
 struct Plane {
-    glm::vec3 point{0.0f};
+    glm::dvec3 point{0.0};
     glm::vec3 normal{0.0f, 1.0f, 0.0f}; // unit length (normalised by the parser)
     uint32_t material = 0;
 };
 
 struct Triangle {
-    glm::vec3 p[3];    // counter-clockwise front face; Ng = (p1 - p0) x (p2 - p0)
+    glm::dvec3 p[3];   // counter-clockwise front face; Ng = (p1 - p0) x (p2 - p0)
     glm::vec3 n[3]{};  // vertex normals, valid when hasNormals
     glm::vec2 uv[3]{}; // texture coordinates, valid when hasUVs
     bool hasNormals = false;
@@ -69,6 +71,9 @@ struct Triangle {
 };
 
 struct Scene {
+    // Where this scene's coordinate origin lies in its file's coordinates: 0 as loaded, the
+    // camera's eye once centred for rendering (scene/scene_origin.h).
+    glm::dvec3 origin{0.0};
     Camera camera;
     glm::vec3 background{0.0f};
     glm::vec3 ambient{1.0f};

@@ -17,18 +17,32 @@ namespace {
 
 using Values = std::vector<const Token *>;
 
-float number(const Token *token) {
-    ParsedFloat parsed = parseFloat(token->text);
+// The value of a parsed number token, or the line's error saying what is wrong with it.
+template <typename Parsed> auto valueOf(const Parsed &parsed, const Token *token) {
     if (!parsed.ok())
         throw LineError(describeBadNumber(token->text, parsed.problem));
     return parsed.value;
+}
+
+float number(const Token *token) {
+    return valueOf(parseFloat(token->text), token);
+}
+
+double coordinate(const Token *token) {
+    return valueOf(parseDouble(token->text), token);
 }
 
 glm::vec3 vec3At(const Values &values, size_t first = 0) {
     return {number(values[first]), number(values[first + 1]), number(values[first + 2])};
 }
 
-std::string formatted(glm::vec3 v) {
+// Positions keep double precision (scene/scene_origin.h says why).
+glm::dvec3 pointAt(const Values &values, size_t first = 0) {
+    return {coordinate(values[first]), coordinate(values[first + 1]),
+            coordinate(values[first + 2])};
+}
+
+std::string formatted(glm::dvec3 v) {
     return formatNumber(v.x) + " " + formatNumber(v.y) + " " + formatNumber(v.z);
 }
 
@@ -60,7 +74,7 @@ uint32_t primitiveMaterial(const SceneBuilder &builder, const DirectiveArgs &arg
                                               : builder.currentMaterial;
 }
 
-void addTriangle(SceneBuilder &builder, glm::vec3 a, glm::vec3 b, glm::vec3 c, uint32_t material,
+void addTriangle(SceneBuilder &builder, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, uint32_t material,
                  int &dropped) {
     if (hasZeroArea(a, b, c)) {
         ++dropped;
@@ -90,8 +104,8 @@ void camera(SceneBuilder &builder, const DirectiveArgs &args) {
     if (!eye || !look)
         throw LineError(std::string("camera needs '") + (eye ? "look" : "eye") + " X Y Z'");
     Camera camera;
-    camera.eye = vec3At(eye->values);
-    camera.look = vec3At(look->values);
+    camera.eye = pointAt(eye->values);
+    camera.look = pointAt(look->values);
     if (const KeyedValues *up = args.find("up"))
         camera.up = vec3At(up->values);
     if (const KeyedValues *fov = args.find("fov")) {
@@ -108,7 +122,7 @@ void camera(SceneBuilder &builder, const DirectiveArgs &args) {
     }
     if (camera.eye == camera.look)
         throw LineError("camera eye and look must differ");
-    glm::dvec3 forward = glm::normalize(glm::dvec3(camera.look) - glm::dvec3(camera.eye));
+    glm::dvec3 forward = glm::normalize(camera.look - camera.eye);
     glm::dvec3 up(camera.up);
     // sin(angle between up and the view direction) below 1e-6 leaves no usable right vector.
     if (glm::length(glm::cross(forward, up)) <= 1e-6 * glm::length(up))
@@ -128,7 +142,7 @@ void ambient(SceneBuilder &builder, const DirectiveArgs &args) {
 
 void light(SceneBuilder &builder, const DirectiveArgs &args) {
     Light light;
-    light.position = vec3At(args.positional);
+    light.position = pointAt(args.positional);
     if (const KeyedValues *color = args.find("color"))
         light.color = nonNegativeColour("color", vec3At(color->values));
     if (const KeyedValues *radius = args.find("radius"))
@@ -179,7 +193,7 @@ void use(SceneBuilder &builder, const DirectiveArgs &args) {
 
 void sphere(SceneBuilder &builder, const DirectiveArgs &args) {
     Sphere s;
-    s.center = vec3At(args.positional);
+    s.center = pointAt(args.positional);
     s.radius = number(args.positional[3]);
     if (!(s.radius > 0.0f))
         throw LineError("sphere radius must be > 0, got " + formatNumber(s.radius));
@@ -189,7 +203,7 @@ void sphere(SceneBuilder &builder, const DirectiveArgs &args) {
 
 void plane(SceneBuilder &builder, const DirectiveArgs &args) {
     Plane p;
-    p.point = vec3At(args.positional);
+    p.point = pointAt(args.positional);
     glm::dvec3 normal(vec3At(args.positional, 3));
     double length = glm::length(normal);
     if (length == 0.0)
@@ -202,17 +216,17 @@ void plane(SceneBuilder &builder, const DirectiveArgs &args) {
 void triangle(SceneBuilder &builder, const DirectiveArgs &args) {
     uint32_t material = primitiveMaterial(builder, args, 9);
     int dropped = 0;
-    addTriangle(builder, vec3At(args.positional, 0), vec3At(args.positional, 3),
-                vec3At(args.positional, 6), material, dropped);
+    addTriangle(builder, pointAt(args.positional, 0), pointAt(args.positional, 3),
+                pointAt(args.positional, 6), material, dropped);
     warnDropped(builder, dropped, "");
 }
 
 void vertex(SceneBuilder &builder, const DirectiveArgs &args) {
-    builder.faceVertices.push_back(vec3At(args.positional));
+    builder.faceVertices.push_back(pointAt(args.positional));
 }
 
 // 1-based, or negative = relative to the last `v` so far (as in OBJ).
-glm::vec3 faceVertex(const SceneBuilder &builder, const Token *token) {
+glm::dvec3 faceVertex(const SceneBuilder &builder, const Token *token) {
     ParsedInteger parsed = parseInteger(token->text);
     if (!parsed.ok())
         throw LineError("bad vertex index '" + token->text + "'");
@@ -228,7 +242,7 @@ void face(SceneBuilder &builder, const DirectiveArgs &args) {
     if (args.positional.size() < 3)
         throw LineError("a face needs at least 3 vertices, got " +
                         std::to_string(args.positional.size()));
-    std::vector<glm::vec3> corners;
+    std::vector<glm::dvec3> corners;
     for (const Token *token : args.positional)
         corners.push_back(faceVertex(builder, token));
     int dropped = 0;
@@ -261,7 +275,7 @@ void mesh(SceneBuilder &builder, const DirectiveArgs &args) {
             request.transform.rotations.push_back(
                 MeshRotation{rotationAxis(kv.values[0]), number(kv.values[1])});
         } else if (kv.key == "translate") {
-            request.transform.translation = glm::dvec3(vec3At(kv.values));
+            request.transform.translation = pointAt(kv.values);
         }
     }
     std::string text = readTextFile(request.objPath, "OBJ file");

@@ -176,7 +176,7 @@ TEST(AdaptiveGrid, SameCellsAtAnyScale) {
             s.radius *= scale;
         }
         for (Triangle &t : scaled.triangles)
-            for (glm::vec3 &p : t.p)
+            for (glm::dvec3 &p : t.p)
                 p *= scale;
         Grid g = adaptive(scaled);
         expectWellFormed(g);

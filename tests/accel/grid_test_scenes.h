@@ -28,9 +28,9 @@ inline Scene randomSpheresAndTriangles(unsigned seed, int spheres, int triangles
         Triangle t;
         glm::dvec3 base(coord(rng), coord(rng), coord(rng));
         double extent = size * (unit(rng) < 0.1 ? 1.0 : 0.15); // a few large ones
-        for (glm::vec3 &p : t.p)
-            p = glm::vec3(base +
-                          extent * glm::dvec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5));
+        for (glm::dvec3 &p : t.p)
+            p = glm::dvec3(glm::vec3(
+                base + extent * glm::dvec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5)));
         scene.triangles.push_back(t);
     }
     return scene;

@@ -137,8 +137,8 @@ TEST(GridWalk, FindsEveryCrossingOnRandomRaysAnisotropicGrid) {
 TEST(GridWalk, FindsEveryCrossingInAFlatScene) {
     Scene scene = test::randomSpheresAndTriangles(23, 0, 500);
     for (Triangle &t : scene.triangles)
-        for (glm::vec3 &p : t.p)
-            p.y = 0.25f; // every triangle in one plane: a 2D grid
+        for (glm::dvec3 &p : t.p)
+            p.y = 0.25; // every triangle in one plane: a 2D grid
     Grid g = buildGrid(scene, parseGridOption("regular"));
     EXPECT_EQ(g.resolution.y, 1);
     checkRays(scene, g, 3, 3000);

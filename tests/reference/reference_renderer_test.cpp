@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "reference/reference_renderer.h"
 #include "reference_test_scenes.h"
+#include "scene/scene_origin.h"
 #include "scene_transform.h"
 
 namespace prism {
@@ -104,14 +105,17 @@ TEST(ReferenceRenderer, DeterministicAcrossRunsAndThreads) {
     EXPECT_EQ(a.rays.shadow, b.rays.shadow);
     EXPECT_EQ(a.rays.secondary, b.rays.secondary);
 
-    CameraFrame frame = makeCameraFrame(scene.camera, s.width, s.height);
+    // The renderer traces relative to the camera (reference_renderer.h): so does this.
+    Scene moved = scene;
+    moveOrigin(moved, scene.camera.eye);
+    CameraFrame frame = makeCameraFrame(moved.camera, s.width, s.height);
     RayCounts rays;
     for (int py = 0; py < s.height; ++py)
         for (int px = 0; px < s.width; ++px) {
             glm::dvec3 sum(0.0);
             for (uint32_t k = 0; k < s.samplesPerPixel; ++k)
                 sum +=
-                    tracePixelSample(scene, frame, px, py, k, s.samplesPerPixel, s.maxDepth, rays);
+                    tracePixelSample(moved, frame, px, py, k, s.samplesPerPixel, s.maxDepth, rays);
             glm::vec3 expected(sum / double(s.samplesPerPixel));
             ASSERT_EQ(glm::vec3(a.rgba[size_t(py) * size_t(s.width) + size_t(px)]), expected)
                 << px << "," << py;
@@ -137,6 +141,26 @@ TEST(ReferenceRenderer, SameImageAtEveryScale) {
         EXPECT_LE(largest, 1e-6) << "scale " << scale;
         EXPECT_EQ(image.rays.shadow, reference.rays.shadow) << "scale " << scale;
         EXPECT_EQ(image.rays.secondary, reference.rays.secondary) << "scale " << scale;
+    }
+}
+
+// Positions are double and the reference traces relative to the camera: moved up to 1e7 away
+// the picture is the unit scene's (an offset relative to |P| in the file's coordinates would
+// be 1e7 times larger there, and lose contact shadows).
+TEST(ReferenceRenderer, SameImageFarFromTheOrigin) {
+    Scene base = test::mixedScene(0.3f);
+    RenderSettings s = settings(32, 24, 4, 5);
+    RenderedImage reference = renderReference(base, s);
+    for (glm::dvec3 offset : {glm::dvec3(1e4), glm::dvec3(-1e6, 1e5, 1e6), glm::dvec3(0, 0, 1e7)}) {
+        RenderedImage image = renderReference(test::transformed(base, 1.0, offset), s);
+        double largest = 0.0;
+        for (size_t p = 0; p < image.rgba.size(); ++p)
+            for (int c = 0; c < 3; ++c)
+                largest =
+                    std::max(largest, std::abs(double(image.rgba[p][c]) - reference.rgba[p][c]));
+        EXPECT_LE(largest, 1e-6) << "offset " << offset.x << " " << offset.y << " " << offset.z;
+        EXPECT_EQ(image.rays.shadow, reference.rays.shadow);
+        EXPECT_EQ(image.rays.secondary, reference.rays.secondary);
     }
 }
 

@@ -6,6 +6,7 @@
 #include "reference/reference_renderer.h"
 #include "render/ray_tracer.h"
 #include "scene/scene.h"
+#include "scene/scene_origin.h"
 
 namespace prism::test {
 
@@ -14,9 +15,11 @@ struct GpuRender {
     FrameResult frame;
 };
 
-inline GpuRender renderGpu(vk::Context &context, const Scene &scene, uint32_t width,
-                           uint32_t height, uint32_t spp = 1, uint32_t depth = 5,
-                           GridOptions gridOptions = {}, TracerOptions options = {}) {
+// As prism-render does: the scene centred on the camera (scene/scene_origin.h), then its grid.
+inline GpuRender renderGpu(vk::Context &context, Scene scene, uint32_t width, uint32_t height,
+                           uint32_t spp = 1, uint32_t depth = 5, GridOptions gridOptions = {},
+                           TracerOptions options = {}) {
+    centerOnCamera(scene);
     Grid grid = buildGrid(scene, gridOptions);
     options.maxDepth = depth;
     RayTracer tracer(context, scene, grid, width, height, options);
@@ -26,8 +29,10 @@ inline GpuRender renderGpu(vk::Context &context, const Scene &scene, uint32_t wi
     return out;
 }
 
-inline std::vector<float> renderCpu(const Scene &scene, int width, int height, uint32_t spp = 1,
+// The same centred scene as renderGpu gives the GPU.
+inline std::vector<float> renderCpu(Scene scene, int width, int height, uint32_t spp = 1,
                                     uint32_t depth = 5, RayCounts *rays = nullptr) {
+    centerOnCamera(scene);
     RenderSettings settings;
     settings.width = width;
     settings.height = height;

@@ -46,7 +46,7 @@ TEST(ScenePacking, CarriesEveryArrayAndIndex) {
     EXPECT_TRUE(gpu::materialHasTexture(m));
     EXPECT_EQ(gpu::materialTexture(m), 1u);
     EXPECT_FALSE(gpu::materialHasTexture(packed.materials[1]));
-    EXPECT_EQ(gpu::lightPosition(packed.lights[0]), scene.lights[0].position);
+    EXPECT_EQ(gpu::lightPosition(packed.lights[0]), glm::vec3(scene.lights[0].position));
     EXPECT_EQ(gpu::lightRadius(packed.lights[0]), scene.lights[0].radius);
     EXPECT_EQ(gpu::lightColor(packed.lights[0]), scene.lights[0].color);
     EXPECT_EQ(gpu::textureFirstTexel(packed.textures[1]), 2u); // after the first texture's 2

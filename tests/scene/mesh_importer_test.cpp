@@ -42,11 +42,11 @@ TEST(MeshImporter, TransformsApplyScaleThenRotationsThenTranslationWhateverTheKe
                                                  "scale 2 rotate x 90\n"));
     ASSERT_EQ(scene.triangles.size(), 1u);
     // (1,0,0): scale (2,0,0), z 90 (0,2,0), x 90 (0,0,2), translate (1,0,2).
-    EXPECT_EQ(scene.triangles[0].p[0], glm::vec3(1, 0, 2));
+    EXPECT_EQ(scene.triangles[0].p[0], glm::dvec3(1, 0, 2));
     // (0,1,0): scale (0,2,0), z 90 (-2,0,0), x 90 (-2,0,0), translate (-1,0,0).
-    EXPECT_EQ(scene.triangles[0].p[1], glm::vec3(-1, 0, 0));
+    EXPECT_EQ(scene.triangles[0].p[1], glm::dvec3(-1, 0, 0));
     // (0,0,1): scale (0,0,2), z 90 (0,0,2), x 90 (0,-2,0), translate (1,-2,0).
-    EXPECT_EQ(scene.triangles[0].p[2], glm::vec3(1, -2, 0));
+    EXPECT_EQ(scene.triangles[0].p[2], glm::dvec3(1, -2, 0));
 }
 
 TEST(MeshImporter, VertexNormalsAreTransformedAndNormalised) {
@@ -77,7 +77,7 @@ TEST(MeshImporter, NormalsAndUvsOnlyWhenAllThreeCornersHaveThem) {
     EXPECT_EQ(scene.triangles[0].n[1], glm::vec3(0, 0, 1));
     EXPECT_FALSE(scene.triangles[1].hasUVs);
     EXPECT_TRUE(scene.triangles[1].hasNormals);
-    EXPECT_EQ(scene.triangles[1].p[2], glm::vec3(0, 1, 0));
+    EXPECT_EQ(scene.triangles[1].p[2], glm::dvec3(0, 1, 0));
     EXPECT_TRUE(scene.triangles[2].hasUVs);
     EXPECT_FALSE(scene.triangles[2].hasNormals);
 }

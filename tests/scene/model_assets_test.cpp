@@ -35,10 +35,10 @@ TEST(ModelAssets, CornellBoxCrlfNegativeIndicesAndMaterials) {
                                      prefix + "tallBox", prefix + "light"}));
     // The floor quad "f -4 -3 -2 -1" over its 4 vertices, fanned.
     const Triangle &floor = scene.triangles[0];
-    EXPECT_EQ(floor.p[0], glm::vec3(-1.01f, 0.0f, 0.99f));
-    EXPECT_EQ(floor.p[1], glm::vec3(1.0f, 0.0f, 0.99f));
-    EXPECT_EQ(floor.p[2], glm::vec3(1.0f, 0.0f, -1.04f));
-    EXPECT_EQ(scene.triangles[1].p[2], glm::vec3(-0.99f, 0.0f, -1.04f));
+    EXPECT_EQ(floor.p[0], glm::dvec3(glm::vec3(-1.01f, 0.0f, 0.99f)));
+    EXPECT_EQ(floor.p[1], glm::dvec3(glm::vec3(1.0f, 0.0f, 0.99f)));
+    EXPECT_EQ(floor.p[2], glm::dvec3(glm::vec3(1.0f, 0.0f, -1.04f)));
+    EXPECT_EQ(scene.triangles[1].p[2], glm::dvec3(glm::vec3(-0.99f, 0.0f, -1.04f)));
     const Material &floorMaterial = scene.materials[floor.material];
     EXPECT_EQ(floorMaterial.name, prefix + "floor");
     EXPECT_EQ(floorMaterial.color, glm::vec3(0.725f, 0.71f, 0.68f));

@@ -52,6 +52,18 @@ TEST(ParseFloat, DescribesTheProblem) {
     EXPECT_NE(describeBadNumber("1x", NumberProblem::NotANumber).find("'1x'"), std::string::npos);
 }
 
+// Positions: the same rules as a float, in double precision.
+TEST(ParseDouble, KeepsDecimalsUnderTheFloatRules) {
+    EXPECT_EQ(parseDouble("1000000.3").value, 1000000.3);
+    EXPECT_EQ(parseDouble("+2.5e3").value, 2500.0);
+    EXPECT_EQ(parseDouble("-0.1").value, -0.1);
+    EXPECT_EQ(parseDouble("1e39").problem, NumberProblem::OutOfRange);
+    EXPECT_EQ(parseDouble("nan").problem, NumberProblem::NotFinite);
+    EXPECT_EQ(parseDouble("1.0abc").problem, NumberProblem::NotANumber);
+    EXPECT_EQ(parseDouble("1e-50").value, 0.0);                    // as a float would have it
+    EXPECT_EQ(parseDouble("3.4028235e38").value, double(FLT_MAX)); // rounds to FLT_MAX as a float
+}
+
 TEST(ParseInteger, IsStrict) {
     EXPECT_EQ(parseInteger("12").value, 12);
     EXPECT_EQ(parseInteger("-4").value, -4);

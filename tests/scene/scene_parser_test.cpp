@@ -18,8 +18,8 @@ Scene parse(std::string_view text) {
 
 TEST(SceneParser, EmptySceneHasTheDocumentedDefaults) {
     Scene scene = parse("# nothing here\n\n   \t\n");
-    EXPECT_EQ(scene.camera.eye, glm::vec3(0, 0, 5));
-    EXPECT_EQ(scene.camera.look, glm::vec3(0, 0, 0));
+    EXPECT_EQ(scene.camera.eye, glm::dvec3(0, 0, 5));
+    EXPECT_EQ(scene.camera.look, glm::dvec3(0, 0, 0));
     EXPECT_EQ(scene.camera.up, glm::vec3(0, 1, 0));
     EXPECT_EQ(scene.camera.fovDegrees, 60.0f);
     EXPECT_FALSE(scene.camera.isOrtho());
@@ -43,8 +43,8 @@ TEST(SceneParser, EmptySceneHasTheDocumentedDefaults) {
 
 TEST(SceneParser, CameraTakesItsKeysInAnyOrder) {
     Scene scene = parse("camera fov 50 up 0 0 1 look 1 2 3 eye -1 -2 4.5\n");
-    EXPECT_EQ(scene.camera.eye, glm::vec3(-1, -2, 4.5f));
-    EXPECT_EQ(scene.camera.look, glm::vec3(1, 2, 3));
+    EXPECT_EQ(scene.camera.eye, glm::dvec3(-1, -2, 4.5));
+    EXPECT_EQ(scene.camera.look, glm::dvec3(1, 2, 3));
     EXPECT_EQ(scene.camera.up, glm::vec3(0, 0, 1));
     EXPECT_EQ(scene.camera.fovDegrees, 50.0f);
     EXPECT_FALSE(scene.camera.isOrtho());
@@ -66,7 +66,7 @@ TEST(SceneParser, BackgroundAndAmbient) {
 TEST(SceneParser, LightsWithAndWithoutOptions) {
     Scene scene = parse("light 5 8 -6\nlight 1 2 3 radius 0.5 color 0.5 0.25 2\n");
     ASSERT_EQ(scene.lights.size(), 2u);
-    EXPECT_EQ(scene.lights[0].position, glm::vec3(5, 8, -6));
+    EXPECT_EQ(scene.lights[0].position, glm::dvec3(5, 8, -6));
     EXPECT_EQ(scene.lights[0].color, glm::vec3(1));
     EXPECT_EQ(scene.lights[0].radius, 0.0f);
     EXPECT_EQ(scene.lights[1].color, glm::vec3(0.5f, 0.25f, 2.0f));
@@ -124,7 +124,7 @@ TEST(SceneParser, UseSetsTheMaterialOfPrimitivesThatNameNone) {
 TEST(SceneParser, Sphere) {
     Scene scene = parse("sphere -1.5 1 0.25 2.5\n");
     ASSERT_EQ(scene.spheres.size(), 1u);
-    EXPECT_EQ(scene.spheres[0].center, glm::vec3(-1.5f, 1, 0.25f));
+    EXPECT_EQ(scene.spheres[0].center, glm::dvec3(-1.5, 1, 0.25));
     EXPECT_EQ(scene.spheres[0].radius, 2.5f);
     EXPECT_EQ(scene.finitePrimitiveCount(), 1u);
 }
@@ -132,7 +132,7 @@ TEST(SceneParser, Sphere) {
 TEST(SceneParser, PlaneNormalIsNormalised) {
     Scene scene = parse("plane 0 -1 0 0 0 3\nplane 1 2 3 3 0 4\n");
     ASSERT_EQ(scene.planes.size(), 2u);
-    EXPECT_EQ(scene.planes[0].point, glm::vec3(0, -1, 0));
+    EXPECT_EQ(scene.planes[0].point, glm::dvec3(0, -1, 0));
     EXPECT_EQ(scene.planes[0].normal, glm::vec3(0, 0, 1));
     EXPECT_FLOAT_EQ(scene.planes[1].normal.x, 0.6f);
     EXPECT_FLOAT_EQ(scene.planes[1].normal.z, 0.8f);
@@ -143,9 +143,9 @@ TEST(SceneParser, TriangleKeepsItsWinding) {
     Scene scene = parse("triangle 0 0 0  1 0 0  0 1 0\n");
     ASSERT_EQ(scene.triangles.size(), 1u);
     const Triangle &t = scene.triangles[0];
-    EXPECT_EQ(t.p[0], glm::vec3(0, 0, 0));
-    EXPECT_EQ(t.p[1], glm::vec3(1, 0, 0));
-    EXPECT_EQ(t.p[2], glm::vec3(0, 1, 0));
+    EXPECT_EQ(t.p[0], glm::dvec3(0, 0, 0));
+    EXPECT_EQ(t.p[1], glm::dvec3(1, 0, 0));
+    EXPECT_EQ(t.p[2], glm::dvec3(0, 1, 0));
     EXPECT_FALSE(t.hasNormals);
     EXPECT_FALSE(t.hasUVs);
 }
@@ -161,7 +161,7 @@ TEST(SceneParser, ZeroAreaTrianglesAreDroppedWithAWarning) {
 TEST(SceneParser, FacesFanTriangulateOverVertices) {
     Scene scene = parse("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 1.5 0\nf 1 2 3 4 5\n");
     ASSERT_EQ(scene.triangles.size(), 3u);
-    const glm::vec3 v[5] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5f, 1.5f, 0}};
+    const glm::dvec3 v[5] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 1.5, 0}};
     for (int k = 0; k < 3; ++k) { // (1, k+2, k+3)
         EXPECT_EQ(scene.triangles[k].p[0], v[0]);
         EXPECT_EQ(scene.triangles[k].p[1], v[k + 1]);
@@ -172,9 +172,9 @@ TEST(SceneParser, FacesFanTriangulateOverVertices) {
 TEST(SceneParser, NegativeFaceIndicesCountBackFromTheLastVertex) {
     Scene scene = parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nv 5 5 5\nf -4 -3 -1\n");
     ASSERT_EQ(scene.triangles.size(), 2u);
-    EXPECT_EQ(scene.triangles[0].p[2], glm::vec3(0, 1, 0));
-    EXPECT_EQ(scene.triangles[1].p[0], glm::vec3(0, 0, 0));
-    EXPECT_EQ(scene.triangles[1].p[2], glm::vec3(5, 5, 5));
+    EXPECT_EQ(scene.triangles[0].p[2], glm::dvec3(0, 1, 0));
+    EXPECT_EQ(scene.triangles[1].p[0], glm::dvec3(0, 0, 0));
+    EXPECT_EQ(scene.triangles[1].p[2], glm::dvec3(5, 5, 5));
 }
 
 TEST(SceneParser, FacesUseTheCurrentMaterial) {
@@ -199,8 +199,8 @@ TEST(SceneParser, MeshVerticesDoNotShiftTheScenesOwnNumbering) {
         dir.write("s.scene", "v 0 0 0\nv 1 0 0\nmesh tri.obj\nv 0 1 0\nf 1 2 -1\n");
     Scene loaded = loadScene(scene);
     ASSERT_EQ(loaded.triangles.size(), 2u);
-    EXPECT_EQ(loaded.triangles[1].p[0], glm::vec3(0, 0, 0));
-    EXPECT_EQ(loaded.triangles[1].p[2], glm::vec3(0, 1, 0));
+    EXPECT_EQ(loaded.triangles[1].p[0], glm::dvec3(0, 0, 0));
+    EXPECT_EQ(loaded.triangles[1].p[2], glm::dvec3(0, 1, 0));
 }
 
 TEST(SceneParser, RelativePathsResolveAgainstTheScenesDirectory) {
@@ -211,8 +211,8 @@ TEST(SceneParser, RelativePathsResolveAgainstTheScenesDirectory) {
         dir.write("scenes/a.scene", "mesh models/tri.obj\nmesh ../models/tri.obj\n");
     Scene loaded = loadScene(scene);
     EXPECT_EQ(loaded.triangles.size(), 3u);
-    EXPECT_EQ(loaded.triangles[0].p[1], glm::vec3(1, 0, 0));
-    EXPECT_EQ(loaded.triangles[2].p[1], glm::vec3(2, 0, 0));
+    EXPECT_EQ(loaded.triangles[0].p[1], glm::dvec3(1, 0, 0));
+    EXPECT_EQ(loaded.triangles[2].p[1], glm::dvec3(2, 0, 0));
 }
 
 TEST(SceneParser, QuotedPathsMayContainSpaces) {
@@ -258,7 +258,7 @@ mesh models/bunny.obj red scale 8 translate 0 -0.3 2
     EXPECT_EQ(scene.planes.size(), 1u);
     EXPECT_EQ(scene.spheres.size(), 2u);
     ASSERT_EQ(scene.triangles.size(), 1u);
-    EXPECT_EQ(scene.triangles[0].p[1], glm::vec3(8, -0.3f, 2));
+    EXPECT_EQ(scene.triangles[0].p[1], glm::dvec3(8, -0.3, 2));
     EXPECT_EQ(scene.triangles[0].material, 3u);
     EXPECT_TRUE(scene.warnings.empty());
 }

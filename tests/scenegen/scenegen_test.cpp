@@ -177,7 +177,7 @@ TEST(Scenegen, ToriHaveAboutTheTrianglesAskedFor) {
         EXPECT_TRUE(scene.warnings.empty()) << allWarnings(scene);
         EXPECT_NEAR(double(scene.triangles.size()), double(triangles), 0.1 * triangles);
         EXPECT_EQ(scene.planes.size(), 1u);
-        EXPECT_EQ(scene.camera.eye, glm::vec3(6.2f, 6.4f, 16.2f)) << "the view does not change";
+        EXPECT_EQ(scene.camera.eye, glm::dvec3(6.2, 6.4, 16.2)) << "the view does not change";
     }
 }
 

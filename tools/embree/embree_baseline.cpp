@@ -68,7 +68,7 @@ std::vector<glm::vec3> planeQuads(const Scene &scene, const glm::vec3 &centre, f
     std::vector<glm::vec3> corners;
     for (const Plane &p : scene.planes) {
         glm::vec3 n = glm::normalize(p.normal);
-        glm::vec3 o = centre - glm::dot(centre - p.point, n) * n;
+        glm::vec3 o = centre - glm::dot(centre - glm::vec3(p.point), n) * n;
         glm::vec3 u = glm::normalize(
             glm::cross(n, std::abs(n.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
         glm::vec3 v = glm::cross(n, u);
@@ -113,14 +113,15 @@ EmbreeBaseline::EmbreeBaseline(const Scene &scene, uint32_t width, uint32_t heig
     std::vector<glm::vec3> corners;
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
     for (const Triangle &t : scene.triangles)
-        for (const glm::vec3 &p : t.p) {
+        for (const glm::dvec3 &corner : t.p) {
+            glm::vec3 p(corner); // the scene is centred on the camera: floats are fine here
             corners.push_back(p);
             lo = glm::min(lo, p);
             hi = glm::max(hi, p);
         }
     for (const Sphere &sp : scene.spheres) {
-        lo = glm::min(lo, sp.center - sp.radius);
-        hi = glm::max(hi, sp.center + sp.radius);
+        lo = glm::min(lo, glm::vec3(sp.center) - sp.radius);
+        hi = glm::max(hi, glm::vec3(sp.center) + sp.radius);
     }
     if (!corners.empty())
         addTriangles(s.device, s.scene, corners);
@@ -189,13 +190,14 @@ EmbreeFrame EmbreeBaseline::traceFrame() {
                         glm::vec3(primary.hit.Ng_x[i], primary.hit.Ng_y[i], primary.hit.Ng_z[i]));
                     if (glm::dot(n, dir) > 0.0f)
                         n = -n;
-                    glm::vec3 toLight = light.position - p;
+                    glm::vec3 lightAt(light.position);
+                    glm::vec3 toLight = lightAt - p;
                     float distance = glm::length(toLight);
                     if (glm::dot(n, toLight) <= 0.0f || distance <= 0.0f)
                         continue; // the surface faces away: Prism traces no shadow ray either
                     // Off the surface by a step relative to |p|, as Prism's offsetOrigin.
                     glm::vec3 origin = p + n * (1e-4f * std::max(1.0f, glm::length(p)));
-                    glm::vec3 d = glm::normalize(light.position - origin);
+                    glm::vec3 d = glm::normalize(lightAt - origin);
                     shadow.org_x[i] = origin.x;
                     shadow.org_y[i] = origin.y;
                     shadow.org_z[i] = origin.z;
@@ -203,7 +205,7 @@ EmbreeFrame EmbreeBaseline::traceFrame() {
                     shadow.dir_y[i] = d.y;
                     shadow.dir_z[i] = d.z;
                     shadow.tnear[i] = 0.0f;
-                    shadow.tfar[i] = glm::length(light.position - origin);
+                    shadow.tfar[i] = glm::length(lightAt - origin);
                     shadow.time[i] = 0.0f;
                     shadow.mask[i] = ~0u;
                     shadow.flags[i] = 0;

@@ -9,6 +9,7 @@
 #include "embree_baseline.h"
 #include "render/ray_tracer.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_origin.h"
 
 namespace prism {
 
@@ -28,6 +29,7 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
     std::vector<BenchResult> all;
     for (const std::string &path : scenes) {
         Scene scene = loadScene(path);
+        centerOnCamera(scene);
         std::string name = std::filesystem::path(path).stem().string();
         std::vector<BenchResult> results;
         std::vector<std::unique_ptr<RayTracer>> tracers;

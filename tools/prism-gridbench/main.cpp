@@ -19,6 +19,7 @@
 #include "core/timer.h"
 #include "embree_baseline.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_origin.h"
 
 namespace prism {
 namespace {
@@ -160,6 +161,7 @@ int main(int argc, char **argv) {
             std::string name = std::filesystem::path(path).stem().string();
             std::fprintf(stderr, "prism-gridbench: %s\n", name.c_str());
             Scene scene = loadScene(path);
+            centerOnCamera(scene);
             if (!noEmbree && embreeAvailable())
                 rows.push_back(measureEmbree(scene, name, runs));
             for (const std::string &g : grids)

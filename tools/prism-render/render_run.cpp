@@ -16,6 +16,7 @@
 #include "render/ray_tracer.h"
 #include "render_metadata.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_origin.h"
 #include "vk/context.h"
 
 namespace prism {
@@ -114,6 +115,7 @@ RenderOutcome renderOnCpu(const RenderOptions &o, const Scene &scene) {
 void runRender(const RenderOptions &o) {
     Timer loadTimer;
     Scene scene = loadScene(o.scenePath);
+    centerOnCamera(scene); // both backends trace the same camera-relative scene
     double loadMs = loadTimer.elapsedMs();
     if (!o.quiet)
         for (const std::string &warning : scene.warnings)

@@ -25,13 +25,13 @@ Camera benchmarkCamera(const Camera &start, uint32_t frame, uint32_t frames) {
     double yaw = glm::radians(30.0) * std::sin(2.0 * glm::pi<double>() * t);
     double dolly = 1.0 - 0.2 * std::sin(glm::pi<double>() * t);
     glm::dvec3 up = glm::normalize(glm::dvec3(start.up));
-    glm::dvec3 look(start.look);
-    glm::dvec3 offset = glm::dvec3(start.eye) - look;
+    glm::dvec3 look = start.look;
+    glm::dvec3 offset = start.eye - look;
     // Rodrigues rotation of the eye about the up axis through the look point.
     glm::dvec3 rotated = offset * std::cos(yaw) + glm::cross(up, offset) * std::sin(yaw) +
                          up * glm::dot(up, offset) * (1.0 - std::cos(yaw));
     Camera camera = start;
-    camera.eye = glm::vec3(look + rotated * dolly);
+    camera.eye = look + rotated * dolly;
     return camera;
 }
 

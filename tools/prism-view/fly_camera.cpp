@@ -25,7 +25,7 @@ void FlyCamera::reset(const Camera &start) {
 
 void FlyCamera::update(const FlyInput &input, double seconds) {
     glm::vec3 up = glm::normalize(camera_.up);
-    glm::vec3 toLook = camera_.look - camera_.eye;
+    glm::vec3 toLook(camera_.look - camera_.eye); // positions are double, directions float
     float focus = glm::length(toLook);
     glm::vec3 forward = toLook / focus;
 
@@ -39,14 +39,14 @@ void FlyCamera::update(const FlyInput &input, double seconds) {
         pitch = std::clamp(elevation + pitch, -limit, limit) - elevation;
         glm::vec3 right = glm::normalize(glm::cross(forward, up));
         forward = glm::normalize(rotate(forward, right, pitch));
-        camera_.look = camera_.eye + forward * focus;
+        camera_.look = camera_.eye + glm::dvec3(forward * focus);
     }
     if (input.move != glm::vec3(0.0f)) {
         glm::vec3 right = glm::normalize(glm::cross(forward, up));
         glm::vec3 step = input.move.x * right + input.move.y * up + input.move.z * forward;
         float distance = unitsPerSecond_ * float(seconds) * (input.fast ? kFastFactor : 1.0f);
-        camera_.eye += glm::normalize(step) * distance;
-        camera_.look = camera_.eye + forward * focus;
+        camera_.eye += glm::dvec3(glm::normalize(step) * distance);
+        camera_.look = camera_.eye + glm::dvec3(forward * focus);
     }
     if (input.zoomSteps != 0.0f) {
         if (camera_.isOrtho())
@@ -58,7 +58,7 @@ void FlyCamera::update(const FlyInput &input, double seconds) {
 }
 
 float flySpeedFor(const Scene &scene, const glm::vec3 &boundsMin, const glm::vec3 &boundsMax) {
-    float viewDistance = glm::length(scene.camera.look - scene.camera.eye);
+    float viewDistance = float(glm::length(scene.camera.look - scene.camera.eye));
     float size = scene.finitePrimitiveCount() > 0 ? glm::length(boundsMax - boundsMin) : 0.0f;
     return 0.25f * std::max({size, 2.0f * viewDistance, 1e-3f});
 }

@@ -51,6 +51,10 @@ private:
     // Grid and tracer for `scene` with the current toggles; on failure the old ones stay.
     void buildTracer(const Scene &scene);
     void reloadScene();
+    void recenterOnCamera();
+    // Centres `loaded` on `point` (in the file's coordinates: scene/scene_origin.h), builds its
+    // grid and tracer, and moves the cameras into the new coordinates.
+    void showScene(Scene loaded, const glm::dvec3 &point);
     void recreateSwapchain();
     // Traces at 1/scale of the swapchain's size from now on (no-op when unchanged).
     void setTraceScale(uint32_t scale);
@@ -89,9 +93,11 @@ private:
     std::unique_ptr<Overlay> overlay_;
 
     SceneSource source_;
-    Scene scene_;
+    Scene loaded_; // as the file has it: each centring starts from here (scene_origin.h)
+    Scene scene_;  // centred on where the camera was when last centred
     Grid grid_;
     double gridBuildMs_ = 0.0;
+    uint32_t recenterings_ = 0; // the fly camera went far from the origin (scene_origin.h)
     FeatureToggles toggles_;
     std::unique_ptr<RayTracer> tracer_;
     bool resetCounters_ = true;
