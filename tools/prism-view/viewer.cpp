@@ -109,7 +109,7 @@ void Viewer::buildTracer(const Scene &scene) {
     samples_ = 0;
 }
 
-void Viewer::reloadScene() {
+bool Viewer::reloadScene() {
     try {
         Scene scene = source_.load();
         buildTracer(scene);
@@ -117,9 +117,27 @@ void Viewer::reloadScene() {
         sceneError_.clear();
         notice_ = "reloaded " + source_.path().filename().string();
         std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
+        return true;
     } catch (const Error &e) {
         sceneError_ = e.what();
         std::fprintf(stderr, "%s\n", e.what());
+        return false;
+    }
+}
+
+bool Viewer::setFeatures(const FeatureToggles &features) {
+    if (features == toggles_)
+        return true;
+    FeatureToggles previous = toggles_;
+    toggles_ = features;
+    try {
+        buildTracer(scene_);
+        return true;
+    } catch (const Error &e) {
+        toggles_ = previous;
+        notice_ = e.what();
+        std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
+        return false;
     }
 }
 
@@ -391,9 +409,9 @@ void Viewer::requestWindowSize(uint32_t width, uint32_t height) {
     window_.requestSize(width, height);
 }
 
-void Viewer::reloadSceneFrom(const std::filesystem::path &path) {
+bool Viewer::reloadSceneFrom(const std::filesystem::path &path) {
     source_ = SceneSource(path);
-    reloadScene();
+    return reloadScene();
 }
 
 bool Viewer::converged() const {
@@ -438,16 +456,8 @@ int Viewer::run() {
         updateCamera(frame, frameMs / 1000.0, events.scrollY);
 
         FeatureToggles wanted = toggles_;
-        if (overlay_->build(overlayStats(), wanted, overlayVisible_)) {
-            FeatureToggles previous = toggles_;
-            toggles_ = wanted;
-            try {
-                buildTracer(scene_);
-            } catch (const Error &e) {
-                toggles_ = previous;
-                notice_ = e.what();
-            }
-        }
+        if (overlay_->build(overlayStats(), wanted, overlayVisible_))
+            setFeatures(wanted);
 
         bool measured = options_.benchmarkFrames > 0 && frame >= kBenchmarkWarmupFrames;
         if (measured)
