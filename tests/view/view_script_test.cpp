@@ -8,6 +8,7 @@
 
 #include "benchmark.h"
 #include "core/error.h"
+#include "fake_view.h"
 #include "fly_camera.h"
 #include "script_driver.h"
 #include "view_options.h"
@@ -15,39 +16,27 @@
 namespace prism {
 namespace {
 
-// Parses a prism-view command line; `args` follow the program name.
-ViewScript parseScript(std::vector<std::string> args, ViewOptions *optionsOut = nullptr) {
+// parseViewOptions on a prism-view command line; `args` follow the program name.
+bool parseCommandLine(std::vector<std::string> args, ViewOptions &options, ViewScript &script,
+                      int &exitCode) {
     args.insert(args.begin(), "prism-view");
     std::vector<char *> argv;
     for (std::string &arg : args)
         argv.push_back(arg.data());
+    return parseViewOptions(int(argv.size()), argv.data(), options, script, exitCode);
+}
+
+ViewScript parseScript(std::vector<std::string> args, ViewOptions *optionsOut = nullptr) {
     ViewOptions options;
     ViewScript script;
     int exitCode = 0;
-    EXPECT_TRUE(parseViewOptions(int(argv.size()), argv.data(), options, script, exitCode));
+    EXPECT_TRUE(parseCommandLine(std::move(args), options, script, exitCode));
     if (optionsOut)
         *optionsOut = options;
     return script;
 }
 
-class FakeView : public ViewControls {
-public:
-    void requestWindowSize(uint32_t width, uint32_t height) override {
-        resizes.push_back(std::to_string(width) + "x" + std::to_string(height));
-    }
-    void reloadSceneFrom(const std::filesystem::path &path) override { reloads.push_back(path); }
-    const Camera &sceneCamera() const override { return scene; }
-    void placeCamera(const Camera &camera) override { placed.push_back(camera); }
-    void saveScreenshot(const std::filesystem::path &base) override { screenshots.push_back(base); }
-    bool converged() const override { return isConverged; }
-    uint32_t samplesTarget() const override { return 4; }
-
-    Camera scene;
-    bool isConverged = false;
-    std::vector<std::string> resizes;
-    std::vector<std::filesystem::path> reloads, screenshots;
-    std::vector<Camera> placed;
-};
+using test::FakeView;
 
 TEST(ViewScript, HiddenOptionsParseIntoTheScriptNotTheUserOptions) {
     ViewOptions options;
@@ -72,10 +61,80 @@ TEST(ViewScript, HiddenOptionsParseIntoTheScriptNotTheUserOptions) {
     EXPECT_TRUE(parseScript({"s.scene"}).empty());
 }
 
+TEST(ViewScript, SoakOptionsParse) {
+    ViewScript script = parseScript({"s.scene", "--script-seconds", "600", "--script-reload-every",
+                                     "80", "--script-toggle-every", "30", "--script-resize-every",
+                                     "60:400x300,256x192,320x240"});
+    EXPECT_DOUBLE_EQ(script.seconds, 600.0);
+    EXPECT_EQ(script.frames, 0u);
+    EXPECT_TRUE(script.scripted()) << "a time limit alone ends the run";
+    EXPECT_EQ(script.reloadEvery, 80u);
+    EXPECT_EQ(script.toggleEvery, 30u);
+    EXPECT_EQ(script.resizeEvery, 60u);
+    ASSERT_EQ(script.resizeCycle.size(), 3u);
+    EXPECT_EQ(script.resizeCycle[0].width, 400u);
+    EXPECT_EQ(script.resizeCycle[1].height, 192u);
+    EXPECT_EQ(script.resizeCycle[2].width, 320u);
+    EXPECT_FALSE(script.empty());
+    EXPECT_DOUBLE_EQ(parseScript({"s.scene", "--script-seconds", "0.5"}).seconds, 0.5);
+    EXPECT_EQ(parseScript({"s.scene", "--script-frames", "9", "--script-resize-every", "5:64x48"})
+                  .resizeCycle.size(),
+              1u);
+}
+
+// The message of the prism::Error that parsing `args` throws ("" if none).
+std::string parseError(std::vector<std::string> args) {
+    try {
+        parseScript(std::move(args));
+    } catch (const Error &e) {
+        return e.what();
+    }
+    return "";
+}
+
+// CLI11 rejects a value its check refuses: parsing stops with a non-zero exit status.
+int cliExitCode(std::vector<std::string> args) {
+    ViewOptions options;
+    ViewScript script;
+    int exitCode = 0;
+    EXPECT_FALSE(parseCommandLine(std::move(args), options, script, exitCode));
+    return exitCode;
+}
+
 TEST(ViewScript, MalformedHiddenOptionsSayWhatIsWrong) {
     EXPECT_THROW(parseScript({"s.scene", "--resize-at", "3x200"}), Error);
     EXPECT_THROW(parseScript({"s.scene", "--script-reload", "b.scene"}), Error);
     EXPECT_THROW(parseScript({"s.scene", "--screenshot", "out.exr"}), Error);
+
+    const std::vector<std::string> run = {"s.scene", "--script-frames", "10"};
+    auto with = [&](std::vector<std::string> more) {
+        more.insert(more.begin(), run.begin(), run.end());
+        return parseError(more);
+    };
+    for (const char *bad : {"50", "50:", "x:320x240", "50:320x", "50:320x240,", "50:320x240;64x48"})
+        EXPECT_NE(with({"--script-resize-every", bad}).find("--script-resize-every"),
+                  std::string::npos)
+            << bad;
+    EXPECT_NE(with({"--script-resize-every", "50"}).find("N:WxH[,WxH...]"), std::string::npos);
+    EXPECT_NE(with({"--script-resize-every", "0:320x240"}).find("N >= 1"), std::string::npos);
+    EXPECT_NE(with({"--script-reload-every", "5", "--script-reload", "3:b.scene"})
+                  .find("cannot be combined with --script-reload"),
+              std::string::npos);
+    // Without an end there is no script to run them.
+    for (const char *option :
+         {"--script-reload-every", "--script-toggle-every", "--script-fly-away"})
+        EXPECT_NE(
+            parseError({"s.scene", option, "5"}).find("--script-frames N or --script-seconds S"),
+            std::string::npos)
+            << option;
+    EXPECT_NE(parseError({"s.scene", "--script-resize-every", "5:64x48"}).find("--script-seconds"),
+              std::string::npos);
+
+    EXPECT_NE(cliExitCode({"s.scene", "--script-seconds", "0"}), 0);
+    EXPECT_NE(cliExitCode({"s.scene", "--script-seconds", "-1"}), 0);
+    EXPECT_NE(cliExitCode({"s.scene", "--script-seconds", "ten"}), 0);
+    EXPECT_NE(cliExitCode({"s.scene", "--script-frames", "9", "--script-toggle-every", "0"}), 0);
+    EXPECT_NE(cliExitCode({"s.scene", "--script-frames", "9", "--script-reload-every", "-3"}), 0);
 }
 
 TEST(ScriptDriver, AUserSessionGetsTheNullDriver) {
@@ -124,6 +183,24 @@ TEST(ScriptDriver, OrbitPlacesTheBenchmarkPathEveryFrame) {
     ASSERT_EQ(view.placed.size(), 250u);
     EXPECT_TRUE(sameCamera(view.placed[7], benchmarkCamera(view.scene, 7, 240)));
     EXPECT_TRUE(sameCamera(view.placed[245], benchmarkCamera(view.scene, 5, 240)));
+}
+
+// The far-from-the-origin test jumps 1000 view distances back along the view, then returns to
+// the scene's camera as the view then gives it (re-centred by the jump).
+TEST(ScriptDriver, FlyAwayJumpsBackAndReturns) {
+    ViewScript script;
+    script.frames = 5;
+    script.flyAwayFrame = 2;
+    ScriptDriver driver(script);
+    FakeView view;
+    view.scene.eye = {0.0, 0.0, 4.0};
+    view.scene.look = {0.0, 0.0, 0.0};
+    for (uint32_t frame = 0; frame < 5; ++frame)
+        driver.input(frame, view);
+    ASSERT_EQ(view.placed.size(), 2u);
+    EXPECT_EQ(view.placed[0].eye, glm::dvec3(0.0, 0.0, 4004.0));
+    EXPECT_EQ(view.placed[0].look, glm::dvec3(0.0, 0.0, 4000.0));
+    EXPECT_TRUE(sameCamera(view.placed[1], view.scene));
 }
 
 TEST(ScriptDriver, EndsAfterItsFramesAndWaitsForAConvergedScreenshot) {

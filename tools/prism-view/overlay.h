@@ -7,21 +7,13 @@
 
 #include <vulkan/vulkan.h>
 
+#include "feature_toggles.h"
 #include "vk/context.h"
 #include "vk/descriptor_pool.h"
 
 namespace prism {
 
 class Window;
-
-// The tracer features the overlay can switch (the original system's feature-cost experiment).
-struct FeatureToggles {
-    bool shadows = true;
-    bool reflection = true;
-    bool refraction = true;
-    bool grid = true; // off: one cell, every ray tests every primitive
-    bool operator==(const FeatureToggles &) const = default;
-};
 
 struct OverlayStats {
     double fps = 0.0;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "feature_toggles.h"
 #include "scene/scene.h"
 
 namespace prism {
@@ -15,15 +16,26 @@ class ViewControls {
 public:
     virtual void requestWindowSize(uint32_t width, uint32_t height) = 0;
     // The scene file becomes `path` and is reloaded, as if it had been edited: a broken one
-    // shows its error and keeps the last good scene.
-    virtual void reloadSceneFrom(const std::filesystem::path &path) = 0;
+    // shows its error, keeps the last good scene and returns false.
+    virtual bool reloadSceneFrom(const std::filesystem::path &path) = 0;
+    // The scene file shown (the command line's, or the last reloadSceneFrom's).
+    virtual const std::filesystem::path &scenePath() const = 0;
+    // The scene's camera, in the shown coordinates: centred, with this origin in the file's
+    // coordinates (scene/scene_origin.h). A file edit adds the origin back.
     virtual const Camera &sceneCamera() const = 0;
+    virtual glm::dvec3 sceneOrigin() const = 0;
     virtual void placeCamera(const Camera &camera) = 0;
+    // As the overlay's checkboxes do: rebuilds the tracer. On failure (the message is shown)
+    // the previous features stay and this returns false.
+    virtual bool setFeatures(const FeatureToggles &features) = 0;
+    virtual const FeatureToggles &features() const = 0;
     // `base`'s .exr and .png, as F12 writes them.
     virtual void saveScreenshot(const std::filesystem::path &base) = 0;
     // All --spp samples are in and no swapchain rebuild is pending.
     virtual bool converged() const = 0;
     virtual uint32_t samplesTarget() const = 0;
+    // Vulkan validation messages so far (0 without --validation).
+    virtual uint32_t validationMessages() const = 0;
 
 protected:
     ~ViewControls() = default; // not owned through this interface

@@ -110,16 +110,34 @@ void Viewer::buildTracer(const Scene &scene) {
     samples_ = 0;
 }
 
-void Viewer::reloadScene() {
+bool Viewer::reloadScene() {
     try {
         // Centred where the flown camera is, which stays where it was (in the file's terms).
         showScene(source_.load(), scene_.origin + fly_.camera().eye);
         sceneError_.clear();
         notice_ = "reloaded " + source_.path().filename().string();
         std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
+        return true;
     } catch (const Error &e) {
         sceneError_ = e.what();
         std::fprintf(stderr, "%s\n", e.what());
+        return false;
+    }
+}
+
+bool Viewer::setFeatures(const FeatureToggles &features) {
+    if (features == toggles_)
+        return true;
+    FeatureToggles previous = toggles_;
+    toggles_ = features;
+    try {
+        buildTracer(scene_);
+        return true;
+    } catch (const Error &e) {
+        toggles_ = previous;
+        notice_ = e.what();
+        std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
+        return false;
     }
 }
 
@@ -422,9 +440,9 @@ void Viewer::requestWindowSize(uint32_t width, uint32_t height) {
     window_.requestSize(width, height);
 }
 
-void Viewer::reloadSceneFrom(const std::filesystem::path &path) {
+bool Viewer::reloadSceneFrom(const std::filesystem::path &path) {
     source_ = SceneSource(path);
-    reloadScene();
+    return reloadScene();
 }
 
 bool Viewer::converged() const {
@@ -469,16 +487,8 @@ int Viewer::run() {
         updateCamera(frame, frameMs / 1000.0, events.scrollY);
 
         FeatureToggles wanted = toggles_;
-        if (overlay_->build(overlayStats(), wanted, overlayVisible_)) {
-            FeatureToggles previous = toggles_;
-            toggles_ = wanted;
-            try {
-                buildTracer(scene_);
-            } catch (const Error &e) {
-                toggles_ = previous;
-                notice_ = e.what();
-            }
-        }
+        if (overlay_->build(overlayStats(), wanted, overlayVisible_))
+            setFeatures(wanted);
 
         bool measured = options_.benchmarkFrames > 0 && frame >= kBenchmarkWarmupFrames;
         if (measured)

@@ -50,7 +50,7 @@ private:
 
     // Grid and tracer for `scene` with the current toggles; on failure the old ones stay.
     void buildTracer(const Scene &scene);
-    void reloadScene();
+    bool reloadScene(); // false: the error is shown, the last good scene stays
     void recenterOnCamera();
     // Centres `loaded` on `point` (in the file's coordinates: scene/scene_origin.h), builds its
     // grid and tracer, and moves the cameras into the new coordinates.
@@ -72,12 +72,17 @@ private:
 
     // ViewControls, for the driver.
     void requestWindowSize(uint32_t width, uint32_t height) override;
-    void reloadSceneFrom(const std::filesystem::path &path) override;
+    bool reloadSceneFrom(const std::filesystem::path &path) override;
+    const std::filesystem::path &scenePath() const override { return source_.path(); }
     const Camera &sceneCamera() const override { return scene_.camera; }
+    glm::dvec3 sceneOrigin() const override { return scene_.origin; }
     void placeCamera(const Camera &camera) override { fly_.reset(camera); }
+    bool setFeatures(const FeatureToggles &features) override; // also the overlay's checkboxes
+    const FeatureToggles &features() const override { return toggles_; }
     void saveScreenshot(const std::filesystem::path &base) override; // also F12
     bool converged() const override;
     uint32_t samplesTarget() const override { return options_.samplesPerPixel; }
+    uint32_t validationMessages() const override { return context_->validationMessageCount(); }
 
     ViewOptions options_;
     ViewDriver &driver_;
