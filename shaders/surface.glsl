@@ -8,7 +8,18 @@ struct Surface {
     vec3 shadingNormal;   // interpolated vertex normal where present, else geometricNormal
     vec2 uv;
     uint material;
+    // Where shadow rays leave from (reference: surface_reference.h, smoothSurfacePoint):
+    // position, or on the front of a triangle with vertex normals the smooth surface's point.
+    vec3 shadowPosition;
+    bool smoothed; // vertex normals: shadow rays take the shading normal's horizon
 };
+
+// Hanika 2021 (surface_reference.h): p lifted onto each vertex's tangent plane where below it,
+// blended by the barycentrics.
+vec3 smoothSurfacePoint(vec3 p, vec3 p0, vec3 p1, vec3 p2, vec3 n0, vec3 n1, vec3 n2, vec3 b) {
+    return b.x * (p - min(0.0, dot(p - p0, n0)) * n0) + b.y * (p - min(0.0, dot(p - p1, n1)) * n1) +
+           b.z * (p - min(0.0, dot(p - p2, n2)) * n2);
+}
 
 // Plane texture axes: a1 = normalize(n x e) with e the world axis least aligned with n
 // (x before y before z on ties), a2 = n x a1.
@@ -32,6 +43,8 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         s.position = cr.xyz + cr.w * n;
         s.geometricNormal = n;
         s.shadingNormal = n;
+        s.shadowPosition = s.position;
+        s.smoothed = false;
         s.uv = vec2(0.5 + atan(n.z, n.x) / (2.0 * kPi), 0.5 + asin(clamp(n.y, -1.0, 1.0)) / kPi);
         s.material = sphereMaterial(sphere);
     } else if (HAS_PLANES && hit.kind == kKindPlane) {
@@ -41,6 +54,8 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         s.position = p - (dot(no.xyz, p) - no.w) * no.xyz;
         s.geometricNormal = no.xyz;
         s.shadingNormal = no.xyz;
+        s.shadowPosition = s.position;
+        s.smoothed = false;
         s.uv = HAS_TEXTURES ? planeUV(s.position, no.xyz) : vec2(0.0);
         s.material = planeMaterial(plane);
     } else {
@@ -50,10 +65,18 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         s.geometricNormal = normalize(cross(tri.v1.xyz - tri.v0.xyz, tri.v2.xyz - tri.v0.xyz));
         s.shadingNormal = s.geometricNormal;
         s.uv = vec2(b1, b2);
+        s.shadowPosition = s.position;
+        s.smoothed = false;
         if (HAS_VERTEX_NORMALS || HAS_TEXTURES) {
             GpuTriangleShading sh = triangleShadingAt(hit.index);
-            if (HAS_VERTEX_NORMALS && shadingHasNormals(sh))
+            if (HAS_VERTEX_NORMALS && shadingHasNormals(sh)) {
                 s.shadingNormal = normalize(b0 * sh.n0.xyz + b1 * sh.n1.xyz + b2 * sh.n2.xyz);
+                s.smoothed = true;
+                if (dot(dir, s.geometricNormal) < 0.0)
+                    s.shadowPosition =
+                        smoothSurfacePoint(s.position, tri.v0.xyz, tri.v1.xyz, tri.v2.xyz,
+                                           sh.n0.xyz, sh.n1.xyz, sh.n2.xyz, vec3(b0, b1, b2));
+            }
             if (HAS_TEXTURES && shadingHasUVs(sh))
                 s.uv = b0 * sh.uv01.xy + b1 * sh.uv01.zw + b2 * sh.uv2.xy;
         }

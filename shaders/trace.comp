@@ -68,11 +68,14 @@ vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color,
                     float phi = 2.0 * kPi * u.y;
                     target += lightRadius(light) * vec3(rxy * cos(phi), rxy * sin(phi), z);
                 }
-                // A target below the surface's own horizon (an area-light sample, or a point
-                // light seen through an interpolated normal) is shadowed by the surface itself.
-                visible = dot(target - s.position, facingGeometric) > 0.0;
+                // A target below the surface's own horizon (an area-light sample) is shadowed
+                // by the surface itself. With vertex normals the surface is the smooth one they
+                // describe: its point and normal (no stair-step terminator on coarse meshes).
+                vec3 from = s.shadowPosition;
+                vec3 horizon = s.smoothed ? n : facingGeometric;
+                visible = dot(target - from, horizon) > 0.0;
                 if (visible) {
-                    vec3 origin = offsetOrigin(s.position, facingGeometric, target - s.position);
+                    vec3 origin = offsetOrigin(from, horizon, target - from);
                     vec3 toTarget = target - origin;
                     float distance = length(toTarget);
                     gShadowRays += 1u;

@@ -29,6 +29,7 @@ Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit) {
         glm::dvec3 center(sphere.center);
         glm::dvec3 n = glm::normalize(ray.origin + hit.t * ray.dir - center);
         s.position = center + double(sphere.radius) * n;
+        s.shadowPosition = s.position;
         s.geometricNormal = n;
         s.shadingNormal = n;
         s.uv = glm::dvec2(0.5 + std::atan2(n.z, n.x) / (2.0 * kPi),
@@ -41,6 +42,7 @@ Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit) {
         PlaneEquation eq = planeEquation(plane);
         glm::dvec3 p = ray.origin + hit.t * ray.dir;
         s.position = p - (glm::dot(eq.normal, p) - eq.offset) * eq.normal; // project onto it
+        s.shadowPosition = s.position;
         s.geometricNormal = eq.normal;
         s.shadingNormal = eq.normal;
         s.uv = planeUV(s.position, eq.normal);
@@ -57,9 +59,19 @@ Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit) {
         s.geometricNormal = glm::normalize(glm::cross(p1 - p0, p2 - p0));
         s.shadingNormal = s.geometricNormal;
         s.uv = glm::dvec2(b1, b2);
-        if (tri.hasNormals)
+        s.shadowPosition = s.position;
+        if (tri.hasNormals) {
             s.shadingNormal = glm::normalize(b0 * glm::dvec3(tri.n[0]) + b1 * glm::dvec3(tri.n[1]) +
                                              b2 * glm::dvec3(tri.n[2]));
+            s.smooth = true;
+            if (glm::dot(ray.dir, s.geometricNormal) < 0.0) { // the front: where normals point
+                const glm::dvec3 corner[3] = {p0, p1, p2};
+                const glm::dvec3 normal[3] = {glm::dvec3(tri.n[0]), glm::dvec3(tri.n[1]),
+                                              glm::dvec3(tri.n[2])};
+                const double b[3] = {b0, b1, b2};
+                s.shadowPosition = smoothSurfacePoint(s.position, corner, normal, b);
+            }
+        }
         if (tri.hasUVs)
             s.uv = b0 * glm::dvec2(tri.uv[0]) + b1 * glm::dvec2(tri.uv[1]) +
                    b2 * glm::dvec2(tri.uv[2]);
@@ -68,6 +80,16 @@ Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit) {
     }
     }
     return s;
+}
+
+glm::dvec3 smoothSurfacePoint(glm::dvec3 p, const glm::dvec3 corner[3], const glm::dvec3 normal[3],
+                              const double b[3]) {
+    glm::dvec3 lifted(0.0);
+    for (int i = 0; i < 3; ++i) {
+        double below = std::min(0.0, glm::dot(p - corner[i], normal[i]));
+        lifted += b[i] * (p - below * normal[i]);
+    }
+    return lifted;
 }
 
 glm::dvec2 planeUV(glm::dvec3 p, glm::dvec3 n) {

@@ -17,7 +17,20 @@ struct Surface {
     glm::dvec3 shadingNormal;   // interpolated vertex normal where present, else geometricNormal
     glm::dvec2 uv;
     uint32_t material;
+    // Where shadow rays leave from: `position`, or on a triangle with vertex normals seen from
+    // its front, the point of the smooth surface those normals describe (smoothSurfacePoint).
+    glm::dvec3 shadowPosition;
+    bool smooth = false; // vertex normals: the horizon for shadow rays is the shading normal's
 };
+
+// Hanika, "Hacking the Shadow Terminator" (Ray Tracing Gems II, 2021): p projected onto each
+// vertex's tangent plane where it lies below it, the projections blended by the barycentrics
+// b. On a coarse smooth-shaded mesh this lifts the shadow ray's origin from the flat facet to
+// the curved surface the shading normals describe, so facets do not shadow their neighbours
+// at the terminator (the stair-step dark band) and no light leaks: points above every tangent
+// plane stay where they are.
+glm::dvec3 smoothSurfacePoint(glm::dvec3 p, const glm::dvec3 corner[3], const glm::dvec3 normal[3],
+                              const double b[3]);
 
 // `hit` must be a hit of `ray` in `scene` (kind != None).
 Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit);

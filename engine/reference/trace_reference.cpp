@@ -58,10 +58,13 @@ glm::dvec3 directLight(const Scene &scene, const Surface &s, glm::dvec3 facingGe
                                               sample.samplesPerPixel, dim);
             target += double(light.radius) * uniformSpherePoint(u.x, u.y);
         }
-        // A target below the surface's own horizon is shadowed by the surface itself.
-        if (!(glm::dot(target - s.position, facingGeometric) > 0.0))
+        // A target below the surface's own horizon is shadowed by the surface itself. With
+        // vertex normals the surface is the smooth one they describe: its point and normal.
+        glm::dvec3 from = s.shadowPosition;
+        glm::dvec3 horizon = s.smooth ? n : facingGeometric;
+        if (!(glm::dot(target - from, horizon) > 0.0))
             continue;
-        glm::dvec3 origin = offsetOrigin(s.position, facingGeometric, target - s.position);
+        glm::dvec3 origin = offsetOrigin(from, horizon, target - from);
         glm::dvec3 toTarget = target - origin;
         double distance = glm::length(toTarget);
         rays.shadow += 1;

@@ -75,6 +75,9 @@ DirectiveArgs splitDirectiveArgs(const DirectiveSpec &spec, std::span<const Toke
             throw LineError("'" + std::string(key->name) + "' needs " +
                             std::to_string(key->valueCount) +
                             (key->valueCount == 1 ? " value" : " values") + " " + usageOf(spec));
+        while (int(group.values.size()) < key->valueCount + key->optionalValues &&
+               i < tokens.size() && !findKey(spec, tokens[i]))
+            group.values.push_back(&tokens[i++]);
         args.keyed.push_back(std::move(group));
     }
     return args;

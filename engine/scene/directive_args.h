@@ -13,6 +13,7 @@ struct KeySpec {
     std::string_view name;
     int valueCount;
     bool repeatable = false;
+    int optionalValues = 0; // more values it takes when the next tokens are not keys
 };
 
 struct DirectiveSpec {

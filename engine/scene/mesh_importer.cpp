@@ -4,9 +4,12 @@
 #include "scene/diagnostics.h"
 #include "scene/text_file.h"
 #include "scene/tokenizer.h"
+#include "scene/vertex_normals.h"
 
+#include <array>
 #include <cfloat>
 #include <cmath>
+#include <map>
 #include <system_error>
 
 namespace prism {
@@ -45,6 +48,19 @@ std::vector<glm::vec3> placeNormals(const ObjModel &model, const AffineMap &map)
     return placed;
 }
 
+// One id per distinct vertex position, so that a file which repeats a vertex for each face
+// (common after STL or per-face exports) still smooths across its faces.
+std::vector<uint32_t> weldedVertices(const ObjModel &model) {
+    std::map<std::array<float, 3>, uint32_t> ids;
+    std::vector<uint32_t> welded(model.positions.size());
+    for (size_t i = 0; i < welded.size(); ++i) {
+        const glm::vec3 &p = model.positions[i];
+        welded[i] =
+            ids.emplace(std::array<float, 3>{p.x, p.y, p.z}, uint32_t(ids.size())).first->second;
+    }
+    return welded;
+}
+
 } // namespace
 
 bool hasZeroArea(const glm::dvec3 &p0, const glm::dvec3 &p1, const glm::dvec3 &p2) {
@@ -62,6 +78,10 @@ MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &
     std::vector<glm::vec3> normals = placeNormals(model, map);
 
     MeshImportResult result;
+    std::vector<Triangle> triangles;
+    std::vector<SmoothingTriangle> shapes; // with `smooth`: one per triangle, for its normals
+    std::vector<uint32_t> welded =
+        request.smoothCreaseDegrees ? weldedVertices(model) : std::vector<uint32_t>{};
     for (const ObjFace &face : model.faces) {
         uint32_t material = request.namedMaterial.value_or(request.fallbackMaterial);
         if (!request.namedMaterial && face.materialSlot != kObjNoIndex)
@@ -92,11 +112,29 @@ MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &
             if (!t.hasUVs)
                 t.uv[0] = t.uv[1] = t.uv[2] = glm::vec2(0.0f);
             t.material = material;
-            checkTriangleLimit(scene.triangles.size() + 1, maxTriangles);
-            scene.triangles.push_back(t);
-            ++result.triangles;
+            checkTriangleLimit(scene.triangles.size() + triangles.size() + 1, maxTriangles);
+            triangles.push_back(t);
+            if (request.smoothCreaseDegrees)
+                shapes.push_back(
+                    {{t.p[0], t.p[1], t.p[2]},
+                     {welded[size_t(tri[0]->position)], welded[size_t(tri[1]->position)],
+                      welded[size_t(tri[2]->position)]},
+                     face.smoothingGroup});
         }
     }
+    if (request.smoothCreaseDegrees) {
+        // Triangles whose file gave normals keep them ("files with vn keep theirs").
+        std::vector<std::array<glm::vec3, 3>> smooth =
+            smoothVertexNormals(shapes, *request.smoothCreaseDegrees);
+        for (size_t i = 0; i < triangles.size(); ++i)
+            if (!triangles[i].hasNormals) {
+                for (int c = 0; c < 3; ++c)
+                    triangles[i].n[c] = smooth[i][size_t(c)];
+                triangles[i].hasNormals = true;
+            }
+    }
+    scene.triangles.insert(scene.triangles.end(), triangles.begin(), triangles.end());
+    result.triangles = triangles.size();
     return result;
 }
 

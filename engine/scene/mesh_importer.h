@@ -21,6 +21,9 @@ struct MeshRequest {
     MeshTransform transform;
     std::optional<uint32_t> namedMaterial; // the mesh line's NAME: MTL files are not read
     uint32_t fallbackMaterial = 0;         // the current material
+    // `smooth [ANGLE]`: vertex normals for triangles without, split at creases of more than
+    // this many degrees (scene/vertex_normals.h).
+    std::optional<double> smoothCreaseDegrees;
 };
 
 struct MeshImportResult {

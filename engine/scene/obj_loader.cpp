@@ -36,7 +36,8 @@ glm::vec<N, float> objVector(const std::vector<std::string_view> &words, int nee
 struct ObjContext {
     const std::string &fileName;
     int line = 0;
-    bool warnedUv = false, warnedNormal = false;
+    bool warnedUv = false, warnedNormal = false, warnedSmoothing = false;
+    uint32_t smoothingGroup = 0; // the last `s` statement's
 };
 
 std::string rangeMessage(const char *what, int64_t value, size_t count, const char *plural) {
@@ -112,10 +113,30 @@ void parseFace(const std::vector<std::string_view> &words, ObjContext &context, 
     face.firstCorner = uint32_t(model.corners.size());
     face.cornerCount = uint32_t(cornerCount);
     face.materialSlot = model.useMtl.empty() ? kObjNoIndex : int32_t(model.useMtl.size() - 1);
+    face.smoothingGroup = context.smoothingGroup;
     face.line = context.line;
     for (size_t i = 1; i < words.size(); ++i)
         model.corners.push_back(parseCorner(words[i], context, model));
     model.faces.push_back(face);
+}
+
+// `s N` or `s off` (= `s 0`): faces below share vertex normals only within their group when a
+// mesh is smoothed. A value that is neither is not worth refusing a file for: group 0.
+void parseSmoothingGroup(const std::vector<std::string_view> &words, ObjContext &context,
+                         ObjModel &model) {
+    context.smoothingGroup = 0;
+    if (words.size() >= 2 && words[1] == "off")
+        return;
+    ParsedInteger group =
+        words.size() >= 2 ? parseInteger(words[1]) : ParsedInteger{0, NumberProblem::NotANumber};
+    if (group.ok() && group.value >= 0 && group.value <= int64_t(UINT32_MAX)) {
+        context.smoothingGroup = uint32_t(group.value);
+    } else if (!context.warnedSmoothing) {
+        context.warnedSmoothing = true;
+        model.warnings.push_back(
+            warningAt(context.fileName, context.line,
+                      "smoothing group must be a number or 'off'; taken as off (warned once)"));
+    }
 }
 
 void parseStatement(std::string_view text, const std::vector<std::string_view> &words,
@@ -130,6 +151,8 @@ void parseStatement(std::string_view text, const std::vector<std::string_view> &
         model.normals.push_back(objVector<3>(words, 3, "a normal"));
     } else if (keyword == "f") {
         parseFace(words, context, model);
+    } else if (keyword == "s") {
+        parseSmoothingGroup(words, context, model);
     } else if (keyword == "usemtl") {
         model.useMtl.push_back(ObjUseMtl{std::string(restAfterFirstWord(text)), line});
     } else if (keyword == "mtllib") {
@@ -139,7 +162,7 @@ void parseStatement(std::string_view text, const std::vector<std::string_view> &
             throw LineError("mtllib needs a file name");
         model.mtlLibs.push_back(ObjMtlLib{std::move(path), line});
     }
-    // Everything else (o, g, s, l, p, vp, cstype, ...) is of no use to a ray tracer.
+    // Everything else (o, g, l, p, vp, cstype, ...) is of no use to a ray tracer.
 }
 
 } // namespace

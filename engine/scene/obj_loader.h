@@ -23,6 +23,7 @@ struct ObjFace {
     uint32_t firstCorner = 0;
     uint32_t cornerCount = 0;
     int32_t materialSlot = kObjNoIndex; // index into ObjModel::useMtl; none before any usemtl
+    uint32_t smoothingGroup = 0;        // the `s` statement above it; 0 = off or none
     int line = 0;
 };
 
@@ -49,8 +50,9 @@ struct ObjModel {
 };
 
 // Parses OBJ text. Reads v (extra w or colour values ignored), vt (u [v [w]]), vn, f (v, v/vt,
-// v//vn, v/vt/vn; negative = relative to the last one defined), usemtl and mtllib; ignores every
-// other statement. An index must refer to an element defined above its face. Throws
+// v//vn, v/vt/vn; negative = relative to the last one defined), s (smoothing group: a number
+// or `off`; anything else is group 0, warned once), usemtl and mtllib; ignores every other
+// statement. An index must refer to an element defined above its face. Throws
 // prism::FileError(fileName, line, ...) for a bad number, a bad index, a vertex index out of
 // range, or a face with fewer than 3 corners. A texture-coordinate or normal index out of range
 // (a file whose vt or vn lines were taken out; tinyobjloader and Blender load it) is not a
