@@ -112,3 +112,19 @@ vec3 offsetOrigin(vec3 position, vec3 facingNormal, vec3 dir) {
     float eps = max(max(a.x, max(a.y, a.z)), float(PRISM_OFFSET_FLOOR)) * float(PRISM_OFFSET_RELATIVE);
     return position + (dot(dir, facingNormal) >= 0.0 ? eps : -eps) * facingNormal;
 }
+
+// What a ray that misses everything sees: the lat-long environment where the scene has one
+// (docs/scene-format.md), else the background. u turns with atan2(x, -z) less the rotation, so
+// the image's centre lies along -z; v from asin(y), held half a texel from the poles so that
+// bilinear filtering does not wrap from the top row to the bottom one.
+vec3 missColor(vec3 dir) {
+    if (!HAS_ENVIRONMENT)
+        return header.background.rgb;
+    vec4 e = header.environment;
+    uint index = uint(e.x);
+    vec3 d = normalize(dir);
+    float u = 0.5 + (atan(d.x, -d.z) - e.z) / (2.0 * kPi);
+    float v = 0.5 + asin(clamp(d.y, -1.0, 1.0)) / kPi;
+    float halfTexel = 0.5 / float(textureHeight(textureAt(index)));
+    return e.y * textureColor(index, vec2(u, clamp(v, halfTexel, 1.0 - halfTexel)));
+}

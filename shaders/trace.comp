@@ -120,7 +120,7 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
             gSecondaryRays += 1u;
         Hit hit;
         if (!traceClosest(ray.origin, ray.dir, kInfinity, hit)) {
-            radiance += ray.weight * header.background.rgb;
+            radiance += ray.weight * missColor(ray.dir);
         } else {
             Surface s = surfaceAt(ray.origin, ray.dir, hit);
             GpuMaterial m = materialAt(s.material);

@@ -1,5 +1,7 @@
 #include "reference/surface_reference.h"
 
+#include <glm/gtc/constants.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -90,6 +92,20 @@ glm::dvec3 smoothSurfacePoint(glm::dvec3 p, const glm::dvec3 corner[3], const gl
         lifted += b[i] * (p - below * normal[i]);
     }
     return lifted;
+}
+
+glm::dvec3 missColor(const Scene &scene, glm::dvec3 dir) {
+    const Environment &e = scene.environment;
+    if (e.texture == kNoTexture)
+        return glm::dvec3(scene.background);
+    const Texture &image = scene.textures[size_t(e.texture)];
+    glm::dvec3 d = glm::normalize(dir);
+    double pi = glm::pi<double>();
+    double u = 0.5 + (std::atan2(d.x, -d.z) - glm::radians(double(e.rotateDegrees))) / (2.0 * pi);
+    double v = 0.5 + std::asin(std::clamp(d.y, -1.0, 1.0)) / pi;
+    double halfTexel = 0.5 / double(image.height); // no wrap over the poles
+    return double(e.intensity) *
+           textureColor(image, glm::dvec2(u, std::clamp(v, halfTexel, 1.0 - halfTexel)));
 }
 
 glm::dvec2 planeUV(glm::dvec3 p, glm::dvec3 n) {

@@ -43,6 +43,10 @@ glm::dvec2 planeUV(glm::dvec3 p, glm::dvec3 n);
 // first).
 glm::dvec3 textureColor(const Texture &texture, glm::dvec2 uv);
 
+// What a ray leaving along `dir` that hits nothing sees: Scene::environment's lat-long image
+// where there is one (docs/scene-format.md), else the background.
+glm::dvec3 missColor(const Scene &scene, glm::dvec3 dir);
+
 // Origin for a ray leaving `position` in `dir`: moved along the facing geometric normal, to the
 // side the ray leaves from, by PRISM_OFFSET_RELATIVE * max|P_i| (never a fixed epsilon).
 glm::dvec3 offsetOrigin(glm::dvec3 position, glm::dvec3 facingNormal, glm::dvec3 dir);

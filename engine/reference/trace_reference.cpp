@@ -94,7 +94,7 @@ glm::dvec3 traceRadiance(const Scene &scene, const Ray &primary, SampleId sample
             rays.secondary += 1;
         Hit hit;
         if (!traceClosest(scene, ray, kInfinity, hit)) {
-            radiance += pending.weight * glm::dvec3(scene.background);
+            radiance += pending.weight * missColor(scene, ray.dir);
             continue;
         }
         Surface s = surfaceAt(scene, ray, hit);

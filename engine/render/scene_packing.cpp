@@ -29,6 +29,8 @@ PackedScene packScene(const Scene &scene, const Grid &grid) {
     h.idEnd = PrimitiveIds(scene).end;
     h.background = glm::vec4(scene.background, 1.0f);
     h.ambient = glm::vec4(scene.ambient, 1.0f);
+    const Environment &e = scene.environment;
+    h.environment = glm::vec4(float(e.texture), e.intensity, glm::radians(e.rotateDegrees), 0.0f);
 
     for (const Sphere &s : scene.spheres)
         packed.spheres.push_back(

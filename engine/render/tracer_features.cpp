@@ -22,6 +22,7 @@ TracerFeatures featuresOf(const Scene &scene) {
     f.reflection = used([](const Material &m) { return m.reflect > 0.0f; });
     f.transmission = used([](const Material &m) { return m.transmit > 0.0f; });
     f.textures = used([](const Material &m) { return m.texture != kNoTexture; });
+    f.environment = scene.environment.texture != kNoTexture;
     f.areaLights = std::any_of(scene.lights.begin(), scene.lights.end(),
                                [](const Light &l) { return l.radius > 0.0f; });
     f.vertexNormals = std::any_of(scene.triangles.begin(), scene.triangles.end(),
@@ -51,6 +52,7 @@ std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
             {gpu::kSpecHasTextures, textures},
             {gpu::kSpecHasAreaLights, areaLights},
             {gpu::kSpecHasVertexNormals, vertexNormals},
+            {gpu::kSpecHasEnvironment, environment},
             {gpu::kSpecHasShadows, shadows},
             {gpu::kSpecWriteAov, writeAov},
             {gpu::kSpecStackSize, stackSize},

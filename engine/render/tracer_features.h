@@ -32,6 +32,7 @@ struct TracerFeatures {
     bool textures = false;
     bool areaLights = false;
     bool vertexNormals = false;
+    bool environment = false;
     bool shadows = true;
     bool writeAov = false;
     uint32_t maxDepth = 5;

@@ -49,6 +49,14 @@ struct Material {
     int32_t texture = kNoTexture; // index into Scene::textures
 };
 
+// What rays that miss everything see instead of the background: a lat-long image
+// (docs/scene-format.md, `environment`). It does not light the scene (Whitted: lights do).
+struct Environment {
+    int32_t texture = kNoTexture; // index into Scene::textures
+    float intensity = 1.0f;
+    float rotateDegrees = 0.0f; // about +y
+};
+
 struct Sphere {
     glm::dvec3 center{0.0};
     float radius = 1.0f;
@@ -76,6 +84,7 @@ struct Scene {
     glm::dvec3 origin{0.0};
     Camera camera;
     glm::vec3 background{0.0f};
+    Environment environment;
     glm::vec3 ambient{1.0f};
     std::vector<Light> lights;
     std::vector<Material> materials; // materials[0] is the built-in "default"

@@ -136,6 +136,21 @@ void background(SceneBuilder &builder, const DirectiveArgs &args) {
     builder.scene.background = nonNegativeColour("background", vec3At(args.positional));
 }
 
+void environment(SceneBuilder &builder, const DirectiveArgs &args) {
+    if (builder.environmentLine != 0)
+        throw LineError("only one environment is allowed (the first is at line " +
+                        std::to_string(builder.environmentLine) + ")");
+    Environment e;
+    if (const KeyedValues *intensity = args.find("intensity"))
+        e.intensity = nonNegative("intensity", number(intensity->values[0]));
+    if (const KeyedValues *rotate = args.find("rotate"))
+        e.rotateDegrees = number(rotate->values[0]);
+    e.texture = builder.textures.load(resolveInputPath(builder.baseDir, args.positional[0]->text),
+                                      builder.scene);
+    builder.scene.environment = e;
+    builder.environmentLine = builder.line;
+}
+
 void ambient(SceneBuilder &builder, const DirectiveArgs &args) {
     builder.scene.ambient = nonNegativeColour("ambient", vec3At(args.positional));
 }
@@ -316,6 +331,13 @@ const std::map<std::string_view, Directive> &directives() {
           camera}},
         {"background", {{"background", "background R G B", 3, 3, {}}, background}},
         {"ambient", {{"ambient", "ambient R G B", 3, 3, {}}, ambient}},
+        {"environment",
+         {{"environment",
+           "environment PATH [intensity K] [rotate DEG]",
+           1,
+           1,
+           {{"intensity", 1}, {"rotate", 1}}},
+          environment}},
         {"light",
          {{"light", "light X Y Z [color R G B] [radius R]", 3, 3, {{"color", 3}, {"radius", 1}}},
           light}},

@@ -29,6 +29,7 @@ struct SceneBuilder {
     std::unordered_map<std::string, int> materialLine; // 0 for the built-in `default`
     uint32_t currentMaterial = 0;
     int cameraLine = 0;                  // 0 until a camera line
+    int environmentLine = 0;             // 0 until an environment line
     std::vector<glm::dvec3> faceVertices; // this file's `v` lines, for `f`
 
     TextureCache textures;

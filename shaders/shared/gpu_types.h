@@ -21,16 +21,17 @@ PRISM_INLINE uint indexFromFloat(float lane) {
 }
 
 struct GpuSceneHeader {
-    vec4 gridMin;    // xyz: grid bounds min
-    vec4 gridMax;    // xyz: grid bounds max
-    vec4 cellSize;   // xyz: size of one cell; w unused
-    uvec4 gridRes;   // xyz: cells per axis; w: cell count
-    uvec4 counts;    // x: spheres, y: planes, z: triangles, w: lights
-    uvec4 idEnd;     // [kind]: end of that finite kind's grid id range (primitive_kinds.h)
-    vec4 background; // rgb
-    vec4 ambient;    // rgb: scene ambient light
-    vec4 voxelSize;  // adaptive grid: xyz size of one voxel
-    uvec4 voxels;    // adaptive grid: xyz voxels per axis, w: voxels per top cell (log2)
+    vec4 gridMin;     // xyz: grid bounds min
+    vec4 gridMax;     // xyz: grid bounds max
+    vec4 cellSize;    // xyz: size of one cell; w unused
+    uvec4 gridRes;    // xyz: cells per axis; w: cell count
+    uvec4 counts;     // x: spheres, y: planes, z: triangles, w: lights
+    uvec4 idEnd;      // [kind]: end of that finite kind's grid id range (primitive_kinds.h)
+    vec4 background;  // rgb
+    vec4 ambient;     // rgb: scene ambient light
+    vec4 voxelSize;   // adaptive grid: xyz size of one voxel
+    uvec4 voxels;     // adaptive grid: xyz voxels per axis, w: voxels per top cell (log2)
+    vec4 environment; // x: texture index (-1: none), y: intensity, z: rotation about +y (rad)
 };
 PRISM_INLINE uint headerPlaneCount(PRISM_IN(GpuSceneHeader) h) {
     return h.counts.y;
@@ -202,7 +203,8 @@ PRISM_NAMESPACE_END
 #ifdef __cplusplus
 #include <cstddef>
 namespace prism::gpu {
-static_assert(sizeof(GpuSceneHeader) == 160);
+static_assert(sizeof(GpuSceneHeader) == 176);
+static_assert(offsetof(GpuSceneHeader, environment) == 160);
 static_assert(offsetof(GpuSceneHeader, voxels) == 144);
 static_assert(offsetof(GpuSceneHeader, gridRes) == 48);
 static_assert(offsetof(GpuSceneHeader, idEnd) == 80);

@@ -47,8 +47,8 @@ PRISM_CONST(uint, kSpecHasAreaLights, 4u);
 PRISM_CONST(uint, kSpecHasVertexNormals, 5u);
 PRISM_CONST(uint, kSpecHasShadows, 6u);
 PRISM_CONST(uint, kSpecWriteAov, 7u);
-// 8: free (was a loop budget, before loop_limit.glsl)
-PRISM_CONST(uint, kSpecStackSize, 9u); // 2 * maxDepth - 1
+PRISM_CONST(uint, kSpecHasEnvironment, 8u); // misses see Scene::environment, not the background
+PRISM_CONST(uint, kSpecStackSize, 9u);      // 2 * maxDepth - 1
 PRISM_CONST(uint, kSpecTexelBuffers, 10u);
 PRISM_CONST(uint, kSpecAdaptiveGrid, 11u); // walk the adaptive grid's cells, not a regular DDA
 

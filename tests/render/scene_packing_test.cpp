@@ -105,7 +105,11 @@ TEST(TracerFeatures, FollowTheScene) {
     TracerFeatures f = featuresOf(scene);
     EXPECT_TRUE(f.has(gpu::kKindSphere) && f.has(gpu::kKindPlane) && f.has(gpu::kKindTriangle));
     EXPECT_TRUE(f.reflection && f.transmission);
-    EXPECT_FALSE(f.textures || f.areaLights || f.vertexNormals);
+    EXPECT_FALSE(f.textures || f.areaLights || f.vertexNormals || f.environment);
+    scene.textures.push_back(Texture{"sky", 1, 1, {glm::vec4(1.0f)}});
+    scene.environment.texture = 0;
+    EXPECT_TRUE(featuresOf(scene).environment);
+    EXPECT_FALSE(featuresOf(scene).textures) << "no material uses it";
     scene.materials[3].transmit = 0.0f;
     EXPECT_FALSE(featuresOf(scene).transmission);
     f.maxDepth = 5;
@@ -113,7 +117,7 @@ TEST(TracerFeatures, FollowTheScene) {
     std::map<uint32_t, uint32_t> constants;
     for (vk::SpecializationConstant c : f.specialization())
         EXPECT_TRUE(constants.emplace(c.id, c.value).second) << "constant_id " << c.id << " twice";
-    EXPECT_EQ(constants.size(), 11u); // every constant_id of shared/trace_interface.h
+    EXPECT_EQ(constants.size(), 12u); // every constant_id of shared/trace_interface.h
     EXPECT_EQ(constants.at(gpu::kSpecAdaptiveGrid), 0u);
     EXPECT_EQ(constants.at(gpu::kSpecKinds), 0b111u) << "spheres, triangles and planes";
     EXPECT_EQ(constants.at(gpu::kSpecStackSize), 9u) << "stack holds 2 * depth - 1 rays";

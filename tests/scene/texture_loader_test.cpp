@@ -156,5 +156,54 @@ TEST(TextureCache, MaterialLinesShareTexturesAndAcceptQuotedPaths) {
     EXPECT_EQ(scene.textures[0].texels[1], glm::vec4(0, 0, 0, 1));
 }
 
+// `environment PATH [intensity K] [rotate DEG]`: the image is a texture like any other (an EXR
+// kept linear), shared with materials naming the same file; one environment a scene.
+TEST(Environment, LineLoadsItsImageWithIntensityAndRotation) {
+    TempDir dir;
+    writeImage<float>(dir.path() / "sky.exr", 2, 1, 3, OIIO::TypeDesc::FLOAT,
+                      {2.0f, 1.0f, 0.5f, 0.0f, 0.0f, 4.0f});
+    Scene plain = loadScene(dir.write("a.scene", "sphere 0 0 0 1\n"));
+    EXPECT_EQ(plain.environment.texture, kNoTexture);
+    Scene scene = loadScene(dir.write(
+        "s.scene", "environment sky.exr rotate -30 intensity 0.5\nmaterial m texture sky.exr\n"));
+    ASSERT_EQ(scene.textures.size(), 1u);
+    EXPECT_EQ(scene.environment.texture, 0);
+    EXPECT_EQ(scene.materials[1].texture, 0);
+    EXPECT_EQ(scene.environment.intensity, 0.5f);
+    EXPECT_EQ(scene.environment.rotateDegrees, -30.0f);
+    EXPECT_EQ(scene.textures[0].texels[0], glm::vec4(2.0f, 1.0f, 0.5f, 1.0f)); // HDR kept
+    Scene defaults = loadScene(dir.write("d.scene", "environment sky.exr\n"));
+    EXPECT_EQ(defaults.environment.intensity, 1.0f);
+    EXPECT_EQ(defaults.environment.rotateDegrees, 0.0f);
+}
+
+TEST(Environment, ErrorsNameTheLine) {
+    TempDir dir;
+    writeImage<float>(dir.path() / "sky.exr", 1, 1, 3, OIIO::TypeDesc::FLOAT, {1.0f, 1.0f, 1.0f});
+    struct Case {
+        const char *text;
+        int line;
+        const char *fragment;
+    };
+    for (const Case &c :
+         {Case{"\nenvironment missing.exr\n", 2, "missing.exr"},
+          Case{"environment sky.exr\nenvironment sky.exr\n", 2, "only one environment"},
+          Case{"environment sky.exr intensity -1\n", 1, "must not be negative"},
+          Case{"environment\n", 1, "environment PATH"},
+          Case{"environment sky.exr rotate\n", 1, "'rotate' needs 1 value"}}) {
+        std::filesystem::path scene = dir.write("bad.scene", c.text);
+        try {
+            loadScene(scene);
+            ADD_FAILURE() << "accepted: " << c.text;
+        } catch (const Error &e) {
+            std::string message = e.what();
+            EXPECT_NE(message.find(scene.string() + ":" + std::to_string(c.line) + ":"),
+                      std::string::npos)
+                << message;
+            EXPECT_NE(message.find(c.fragment), std::string::npos) << message;
+        }
+    }
+}
+
 } // namespace
 } // namespace prism

@@ -1,0 +1,89 @@
+// `environment`: what rays that miss everything see (docs/scene-format.md), on the shader with
+// validation on and on the CPU reference, checked against the image's own texels.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "gpu_fixture.h"
+#include "render_helpers.h"
+#include "scene_builders.h"
+
+namespace prism::test {
+namespace {
+
+class Environment : public GpuTest {};
+
+constexpr int kColumns = 8;
+
+// An 8 x 2 lat-long image, each column its own colour and both rows alike, turned by 22.5
+// degrees: a direction along -z then samples column 3's centre exactly, one along +x column
+// 5's (u = 0.5 + (atan2(x, -z) - rotation) / 2pi), so bilinear filtering has nothing to blend.
+glm::vec3 column(int c) {
+    return {0.1f + 0.1f * float(c), 0.5f, 1.0f - 0.1f * float(c)};
+}
+
+Scene skyScene() {
+    Scene scene = sceneWithDefaultMaterial();
+    Texture sky;
+    sky.path = "sky";
+    sky.width = kColumns;
+    sky.height = 2;
+    for (int row = 0; row < 2; ++row)
+        for (int c = 0; c < kColumns; ++c)
+            sky.texels.push_back(glm::vec4(column(c), 1.0f));
+    scene.textures.push_back(sky);
+    scene.environment.texture = 0;
+    scene.environment.intensity = 2.0f;
+    scene.environment.rotateDegrees = 22.5f;
+    scene.background = {1.0f, 0.0f, 1.0f}; // must not be seen
+    scene.camera.eye = {0.0, 0.0, 0.0};
+    scene.camera.look = {0.0, 0.0, -1.0};
+    return scene;
+}
+
+// The centre of a 9x9 image looks exactly along the camera's forward axis.
+glm::vec3 centre(const std::vector<float> &rgba) {
+    size_t p = 4 * (4 * 9 + 4);
+    return {rgba[p], rgba[p + 1], rgba[p + 2]};
+}
+
+void expectColour(glm::vec3 got, glm::vec3 want) {
+    EXPECT_NEAR(got.x, want.x, 1e-5f);
+    EXPECT_NEAR(got.y, want.y, 1e-5f);
+    EXPECT_NEAR(got.z, want.z, 1e-5f);
+}
+
+TEST_F(Environment, SeenStraightAndNotAsLight) {
+    Scene scene = skyScene();
+    // A diffuse sphere in view, no lights, no ambient: the sky must not light it.
+    uint32_t clay = addMaterial(scene, "clay", {0.8f, 0.8f, 0.8f});
+    scene.materials[clay].ambient = 0.0f;
+    scene.spheres.push_back(Sphere{{0.0, 3.0, -6.0}, 1.0f, clay});
+    TracedImage gpu = renderGpu(context(), scene, 9, 9, 1, 3).image;
+    std::vector<float> cpu = renderCpu(scene, 9, 9, 1, 3);
+    expectColour(centre(gpu.rgba), 2.0f * column(3));
+    expectColour(centre(cpu), 2.0f * column(3));
+    size_t sphere = 4 * (1 * 9 + 4); // row 1 looks up at the sphere
+    EXPECT_TRUE(std::isfinite(gpu.rgba[sphere]));
+    EXPECT_EQ(glm::vec3(gpu.rgba[sphere], gpu.rgba[sphere + 1], gpu.rgba[sphere + 2]),
+              glm::vec3(0.0f));
+}
+
+TEST_F(Environment, SeenThroughAMirror) {
+    Scene scene = skyScene();
+    uint32_t mirror = addMaterial(scene, "mirror", {0.2f, 0.2f, 0.2f}, 1.0f);
+    scene.materials[mirror].ambient = 0.0f;
+    scene.materials[mirror].diffuse = 0.0f;
+    // At 45 degrees across the view: the centre ray (-z) leaves it along +x.
+    scene.planes.push_back(Plane{{0.0, 0.0, -2.0}, glm::normalize(glm::vec3(1, 0, 1)), mirror});
+    TracedImage gpu = renderGpu(context(), scene, 9, 9, 1, 2).image;
+    std::vector<float> cpu = renderCpu(scene, 9, 9, 1, 2);
+    expectColour(centre(gpu.rgba), 2.0f * column(5));
+    expectColour(centre(cpu), 2.0f * column(5));
+    // With depth 1 the reflected ray is not traced: the mirror is black, not the sky.
+    TracedImage shallow = renderGpu(context(), scene, 9, 9, 1, 1).image;
+    expectColour(centre(shallow.rgba), glm::vec3(0.0f));
+}
+
+} // namespace
+} // namespace prism::test
