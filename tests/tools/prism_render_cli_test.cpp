@@ -82,6 +82,18 @@ TEST_F(PrismRenderCli, StatsLineAndExrWithAovsAndMetadata) {
     EXPECT_EQ(stats["rays"]["primary"].get<uint64_t>(), 24u * 16u * 2u);
     EXPECT_GT(stats["rays"]["shadow"].get<uint64_t>(), 0u);
     EXPECT_EQ(stats["frames"].get<int>(), 3);
+    // Start-up and the rest, phase by phase: each measured, and together no more than the whole.
+    double phases = 0.0;
+    for (const char *phase : {"load", "build", "context", "tracer", "compile", "frames", "readback",
+                              "count", "write"}) {
+        ASSERT_TRUE(stats["phases_ms"].contains(phase)) << phase;
+        EXPECT_GE(stats["phases_ms"][phase].get<double>(), 0.0) << phase;
+        phases += stats["phases_ms"][phase].get<double>();
+    }
+    double total = stats["phases_ms"]["total"].get<double>();
+    EXPECT_LE(phases, total);
+    EXPECT_GE(stats["phases_ms"]["frames"].get<double>(), 3.0 * stats["trace_ms"].get<double>())
+        << "the host's clock sees at least the GPU time of three timed frames";
 
     prism::LoadedImage image = prism::readImage(out);
     EXPECT_EQ(image.width, 24);

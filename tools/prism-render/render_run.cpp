@@ -22,32 +22,50 @@
 namespace prism {
 namespace {
 
+// Where a Vulkan render's wall-clock time goes before and after the frames (--stats
+// "phases_ms"), so start-up can be judged: docs/benchmarks.md has cold and warm figures.
+struct VulkanPhases {
+    double contextMs = 0.0;  // instance, device, queues (and validation layers if asked)
+    double tracerMs = 0.0;   // scene arrays uploaded, pipeline created for the scene's variant
+    double compileMs = 0.0;  // the untimed 8x8 dispatch: lavapipe compiles the shader there
+    double framesMs = 0.0;   // every frame on the host's clock, waits included
+    double readbackMs = 0.0; // accumulation (and AOVs) copied back and divided
+};
+
 // What one backend produced: the image and the per-frame timings.
 struct RenderOutcome {
     OutputImage image;
     std::vector<double> frameMs; // timed frames only (after warm-up)
     RayCounts rays;              // of one frame
     std::string device;
+    VulkanPhases phases;
 };
 
 RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const Grid &grid) {
     vk::ContextOptions contextOptions;
     contextOptions.validation = o.validation;
     contextOptions.deviceNameFilter = o.deviceFilter;
+    RenderOutcome out;
+    Timer phase;
     vk::Context context(contextOptions);
+    out.phases.contextMs = phase.elapsedMs();
 
     TracerOptions tracerOptions;
     tracerOptions.maxDepth = o.maxDepth;
     tracerOptions.writeAov = o.aovDepth || o.aovNormal;
+    phase.reset();
     RayTracer tracer(context, scene, grid, o.width, o.height, tracerOptions);
+    out.phases.tracerMs = phase.elapsedMs();
 
-    RenderOutcome out;
     out.device = context.deviceName();
     ProgressLine progress(!o.quiet);
     // lavapipe compiles the shader inside the first dispatch: one 8x8 tile takes that out of
     // the timed frames. Timing several frames (--repeat) also gets a warm-up frame, so that
     // they are alike (caches, clocks); a single render does not pay a second frame for that.
+    phase.reset();
     tracer.compile(scene.camera);
+    out.phases.compileMs = phase.elapsedMs();
+    phase.reset();
     for (uint32_t frame = o.repeat > 1 ? 0 : 1; frame <= o.repeat; ++frame) {
         std::string label = frame == 0
                                 ? "warm-up frame"
@@ -65,7 +83,10 @@ RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const G
         out.rays = result.rays;
     }
     progress.finish();
+    out.phases.framesMs = phase.elapsedMs();
+    phase.reset();
     TracedImage traced = tracer.readback(o.samplesPerPixel);
+    out.phases.readbackMs = phase.elapsedMs();
     if (context.validationMessageCount() > 0)
         throw Error(std::to_string(context.validationMessageCount()) +
                     " Vulkan validation messages (printed above); refusing to write the image");
@@ -113,6 +134,7 @@ RenderOutcome renderOnCpu(const RenderOptions &o, const Scene &scene) {
 } // namespace
 
 void runRender(const RenderOptions &o) {
+    Timer process; // from here (the command line is parsed) to the image on disk
     Timer loadTimer;
     Scene scene = loadScene(o.scenePath);
     centerOnCamera(scene); // both backends trace the same camera-relative scene
@@ -144,7 +166,9 @@ void runRender(const RenderOptions &o) {
     record.gridBuildMs = buildMs;
     // The grid's work per primary ray, counted on the CPU for every render; counting stops at
     // 1,000 tests a ray (under 2M tests, tens of ms, at worst), giving lower bounds.
+    Timer countTimer;
     WalkCounts walk = countWalks(scene, grid, double(o.width) / double(o.height), 48, 1e3);
+    double countMs = countTimer.elapsedMs();
     record.gridChoice = grid.choice;
     record.gridCells = grid.cellCount();
     record.gridBytes = grid.bytes();
@@ -154,7 +178,10 @@ void runRender(const RenderOptions &o) {
     record.samplesPerPixel = o.samplesPerPixel;
     record.maxDepth = o.maxDepth;
     ImageMetadata meta = renderMetadata(record);
+    Timer writeTimer;
     writeImage(o.outputPath, out.image, meta);
+    double writeMs = writeTimer.elapsedMs();
+    double processMs = process.elapsedMs();
 
     if (o.stats) {
         nlohmann::json stats = {
@@ -186,6 +213,15 @@ void runRender(const RenderOptions &o) {
               {"shadow", out.rays.shadow},
               {"secondary", out.rays.secondary}}},
             {"mrays_per_s", mraysPerSecond}};
+        nlohmann::json phases = {{"load", loadMs}, {"build", buildMs}};
+        if (o.backend == Backend::Vulkan)
+            phases.update({{"context", out.phases.contextMs},
+                           {"tracer", out.phases.tracerMs},
+                           {"compile", out.phases.compileMs},
+                           {"frames", out.phases.framesMs},
+                           {"readback", out.phases.readbackMs}});
+        phases.update({{"count", countMs}, {"write", writeMs}, {"total", processMs}});
+        stats["phases_ms"] = phases;
         std::printf("%s\n", stats.dump().c_str());
     }
 }
