@@ -97,7 +97,7 @@ def make_config(quick):
                      "ref_depth": 12, "check_spp": 128},
         "acceleration": {"size": "256x192", "depth": 1, "runs": 3,
                          "spheres": [50, 500, 5000, 50000],
-                         "tori": [5000, 50000, 200000], "stadium": True,
+                         "tori": [5000, 50000, 200000, 1000000], "stadium": True,
                          "off_max_primitives": 5100, "embree": True},
         "original": {"seed_scenes": SEEDS, "size": "1024x768", "runs": 3,
                      "density_scenes": ["scene", "bunny"], "feature_scene": "teapot",
@@ -450,6 +450,7 @@ def _accuracy_charts(rows, refs, c, folder):
         sec = ax.secondary_yaxis("right", functions=(lambda e: 20 * np.log10(1 / np.maximum(e, 1e-12)),
                                                      lambda p: 10 ** (-p / 20)))
         sec.set_ylabel("PSNR (dB, peak 1)")
+        sec.yaxis.set_major_locator(matplotlib.ticker.FixedLocator(range(0, 101, 5)))
         sec.yaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:.0f}"))
         sec.yaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
         ax.set_title(f"{scene}: time against error, {c['size']} (labels: spp/depth)")
@@ -459,7 +460,7 @@ def _accuracy_charts(rows, refs, c, folder):
                                color=colours(i / max(1, len(depths) - 1)), label=f"depth {d}")
                     for i, d in enumerate(depths)]
         handles += ax.get_legend_handles_labels()[0]
-        ax.legend(handles=handles, fontsize=7, ncol=2, loc="upper right")
+        ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.13, 1.0))
         ax.grid(True, which="both", alpha=0.25)
         name = f"time-vs-error-{scene}.png"
         save_figure(fig, folder / name)
@@ -519,10 +520,21 @@ def _accuracy_findings(rows, refs, c):
                    "grey dotted line on each chart), so the charted errors are the "
                    "configurations' own, not the reference's noise.")
     else:
-        out.append(f"**The reference is NOT converged in this run**: spp {c['check_spp']} "
-                   f"against spp {c['ref_spp']} differs by up to {ratio * 100:.0f}% of the "
-                   "smallest charted error, so the smallest errors here are partly the "
-                   "reference's own noise (a --quick run's reference is deliberately small).")
+        floor = sum(1 for r in rows if r["rmse"] < 2 * refs[r["scene"]]["check_rmse"])
+        out.append(f"**How far the reference can be trusted**: spp {c['check_spp']} against spp "
+                   f"{c['ref_spp']} differs by up to {ratio * 100:.0f}% of the smallest "
+                   "charted error, i.e. the best configurations reach the reference's own "
+                   "noise (the grey dotted line on each chart). In depth, "
+                   + (f"every scene's error has stopped changing by depth {max(saturate.values())}, "
+                      f"well before the reference's {c['ref_depth']}"
+                      if max(saturate.values()) < top_depth else
+                      f"some scenes still change up to depth {top_depth}, so depth "
+                      f"{c['ref_depth']} is converged only as far as depth {top_depth} shows")
+                   + f"; in samples, not for the very best points: {floor} of {len(rows)} "
+                   "configurations lie within 2x of that noise (marked † in the table) and "
+                   "their error is an upper bound, not a measurement. Every other error is at "
+                   "least twice the reference's noise. A 4x larger reference (spp 1024) would "
+                   "halve the noise floor at 4x the reference's cost.")
     return out
 
 
@@ -566,10 +578,11 @@ def _accuracy_markdown(rows, refs, c, charts):
           "`trace_ms` (GPU timestamps of one frame) on a shared machine: single frames drift "
           "by 5-10%, so read the fronts, not the third digit.",
           "",
-          f"Is the reference converged? Depth {c['ref_depth']} is past the depth where every "
-          "scene's error stops changing (below), and halving its samples "
-          f"(spp {c['check_spp']}) should change it by far less than the smallest error "
-          "charted (ratio well below 1):",
+          f"Is the reference converged? In depth, {c['ref_depth']} is deeper than any charted "
+          "depth (where error stops changing with depth is below). In samples, halving them "
+          f"(spp {c['check_spp']}) shows the reference's own noise; errors far above it "
+          "(ratio well below 1) are the configurations' own, errors near it are bounded by "
+          "it:",
           "",
           md_table(["scene", f"RMSE spp {c['check_spp']} vs {c['ref_spp']}",
                     "smallest charted RMSE", "ratio", "reference trace ms"],
@@ -583,7 +596,8 @@ def _accuracy_markdown(rows, refs, c, charts):
           "### For this error, pick this",
           "",
           "The cheapest configuration (spp / depth, and its trace ms) that reaches each PSNR; "
-          "'-' where none charted does:",
+          "'-' where none charted does; † where its error is within 2x of the reference's "
+          "noise (an upper bound):",
           ""]
     table = []
     for scene in c["scenes"]:
@@ -593,7 +607,8 @@ def _accuracy_markdown(rows, refs, c, charts):
             ok = [r for r in rs if r["psnr_db"] >= t]
             if ok:
                 r = min(ok, key=lambda r: r["trace_ms"])
-                cells.append(f"{r['spp']} / {r['depth']} ({r['trace_ms']:.0f} ms)")
+                dag = "†" if r["rmse"] < 2 * refs[scene]["check_rmse"] else ""
+                cells.append(f"{r['spp']} / {r['depth']} ({r['trace_ms']:.0f} ms){dag}")
             else:
                 cells.append("-")
         best = max(rs, key=lambda r: r["ssim"])
@@ -960,7 +975,7 @@ def _original_charts(data, c, folder):
     ax.set_yscale("log")
     ax.set_ylabel("seconds per frame (log)")
     ax.set_title("Seed scenes, depth 2 (one level of reflection/refraction), 1 spp")
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.08), ncol=3)
     ax.grid(True, axis="y", which="both", alpha=0.25)
     save_figure(fig, folder / "seed-scenes.png")
     charts["seed"] = "seed-scenes.png"
@@ -1077,7 +1092,7 @@ def _original_markdown(data, c, charts):
     k, _ = _resolution_fit(res)
     per_px = [r["trace_ms"] * 1e3 / r["pixels"] for r in res]
     md += ["### Frame time against resolution", "", f"![Resolution]({p}{charts['resolution']})", "",
-           md_table(["size", "pixels", "trace ms", "µs per 1000 pixels"],
+           md_table(["size", "pixels", "trace ms", "µs per pixel"],
                     [[r["size"], f"{r['pixels']:,}", f"{r['trace_ms']:.1f}", f"{q:.2f}"]
                      for r, q in zip(res, per_px)]), "",
            "### What it shows", ""]
@@ -1089,7 +1104,7 @@ def _original_markdown(data, c, charts):
                                                 for r in seed)) + f" of {len(seed)}.")
     linear = "close to linear" if 0.9 <= k <= 1.1 else ("sub-linear" if k < 0.9 else "super-linear")
     md.append(f"- Frame time grows as pixels^{k:.2f}, {linear}: per-pixel cost goes from "
-              f"{per_px[0]:.2f} to {per_px[-1]:.2f} µs per 1000 pixels from {res[0]['size']} to "
+              f"{per_px[0]:.2f} to {per_px[-1]:.2f} µs per pixel from {res[0]['size']} to "
               f"{res[-1]['size']}. Small frames cost more per pixel (fixed dispatch cost, too few "
               "workgroups to fill the cores); the original's non-linearity came from host "
               "overhead, which these GPU timestamps do not include.")
@@ -1148,6 +1163,37 @@ def write_readme(out, status, review):
     write_text(out / "README.md", "\n".join(parts))
 
 
+def replot(out, chosen, args):
+    """Remakes charts, Markdown and README from the data of an earlier run, keeping that run's
+    date, device, command line and time: a chart can be fixed without re-measuring."""
+    global WRITE_SVG
+    for name in chosen:
+        data_path, sec_path = out / name / "data.json", out / name / "section.json"
+        if not (data_path.is_file() and sec_path.is_file()):
+            continue
+        d, sec = json.loads(data_path.read_text()), json.loads(sec_path.read_text())
+        WRITE_SVG = "quick" not in sec["status"]
+        folder = out / name
+        if name == "accuracy":
+            charts = _accuracy_charts(d["rows"], d["references"], d["config"], folder)
+            sec["markdown"] = _accuracy_markdown(d["rows"], d["references"], d["config"], charts)
+            sec["summary"] = _accuracy_summary(d["rows"], d["config"])
+        elif name == "acceleration":
+            charts = _accel_charts(d["rows"], d["config"], d["grid_modes"], folder)
+            sec["markdown"] = _accel_markdown(d["rows"], d["config"], d["grid_modes"],
+                                              d["embree"], charts)
+            sec["summary"] = _accel_summary(d["rows"])
+        elif name == "original":
+            charts = _original_charts(d, d["config"], folder)
+            sec["markdown"] = _original_markdown(d, d["config"], charts)
+            sec["summary"] = _original_summary(d)
+        write_json(sec_path, sec)
+        print(f"studies: [{name}] replotted", file=sys.stderr)
+    review_path = Path(args.review) if args.review else out / "REVIEW.md"
+    write_readme(out, {}, review_path.read_text() if review_path.is_file() else None)
+    return 0
+
+
 def main():
     parser = argparse.ArgumentParser(
         description="Charts what an image costs against what it is worth, and where methods "
@@ -1164,6 +1210,9 @@ def main():
     parser.add_argument("--set", action="append", default=[], metavar="STUDY.KEY=JSON",
                         help="override one size of the configuration, e.g. "
                              "accuracy.size='\"160x120\"' (recorded in the README)")
+    parser.add_argument("--replot", action="store_true",
+                        help="remake charts, sections and README from DIR/STUDY/data.json "
+                             "without running anything (after a change to a chart)")
     parser.add_argument("--review", metavar="FILE",
                         help="Markdown notes of a by-eye check of the charts, put in the README "
                              "under 'Checked by eye' (default: DIR/REVIEW.md if it exists)")
@@ -1183,6 +1232,8 @@ def main():
         return 2
 
     out = Path(args.out).resolve()
+    if args.replot:
+        return replot(out, chosen, args)
     global WRITE_SVG
     WRITE_SVG = not args.quick
     progress = Progress()
@@ -1191,7 +1242,7 @@ def main():
         config = make_config(args.quick)
         apply_overrides(config, args.set)
         tools = Tools(args.bin, progress)
-        command = "tools/scripts/studies.py " + " ".join(shlex.quote(a) for a in sys.argv[1:])
+        command = " ".join(["tools/scripts/studies.py"] + [shlex.quote(a) for a in sys.argv[1:]])
         for name in chosen:
             started = time.monotonic()
             with tempfile.TemporaryDirectory(prefix=f"studies-{name}-") as tmp:
