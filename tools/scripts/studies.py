@@ -541,17 +541,20 @@ def _accuracy_findings(rows, refs, c):
 def _accuracy_summary(rows, c):
     """One paragraph for the README's top: what to pick for a middling and a high quality."""
     picks = []
-    for t in (30, 35):
+    for t in (30, 40):
         chosen = []
         for scene in c["scenes"]:
             ok = [r for r in rows if r["scene"] == scene and r["psnr_db"] >= t]
             if ok:
-                r = min(ok, key=lambda r: r["trace_ms"])
-                chosen.append(f"{r['spp']}/{r['depth']}")
+                chosen.append(min(ok, key=lambda r: r["trace_ms"]))
         if chosen:
-            common = max(set(chosen), key=chosen.count)
-            picks.append(f"for {t} dB the cheapest spp/depth is {common} on "
-                         f"{chosen.count(common)} of {len(chosen)} scenes that reach it")
+            spp = sorted({r["spp"] for r in chosen})
+            depth = sorted({r["depth"] for r in chosen})
+            ms = sorted(r["trace_ms"] for r in chosen)
+            picks.append(f"for {t} dB the cheapest choice on {len(chosen)} of "
+                         f"{len(c['scenes'])} scenes is spp {spp[0]}-{spp[-1]} at depth "
+                         f"{'/'.join(map(str, depth))}, {ms[0]:.0f}-{ms[-1]:.0f} ms at "
+                         f"{c['size']}")
     top_spp, top_depth = max(c["spp"]), max(c["depth"])
     sat = []
     for scene in c["scenes"]:
