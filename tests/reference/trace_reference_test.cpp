@@ -183,6 +183,25 @@ TEST(Shading, GlassAtNormalIncidenceSplitsBySchlick) {
     EXPECT_EQ(rays.secondary, 4u);
 }
 
+// Off the axis each interface reflects Schlick's F = F0 + (1 - F0) (1 - cos)^5: at normal
+// incidence the exponent does not matter, so the angles here are oblique to grazing (at
+// sin = 0.95 an exponent of 4 reflects 0.22 instead of 0.19).
+TEST(Shading, GlassAtObliqueAnglesFollowsSchlick) {
+    Scene scene = glassSphere();
+    glm::dvec3 bg(scene.background);
+    for (double h : {0.5, 0.8, 0.95}) {
+        SCOPED_TRACE(testing::Message() << "height " << h);
+        // Depth 2: the reflection leaves to the background, the refracted ray ends inside.
+        RayCounts rays;
+        glm::dvec3 value =
+            reference::traceRadiance(scene, {{0.0, h, 5.0}, {0.0, 0.0, -1.0}}, {0, 0}, 2, rays);
+        double cosI = std::sqrt(1.0 - h * h);
+        double fresnel = 0.04 + 0.96 * std::pow(1.0 - cosI, 5.0);
+        expectNear(value, fresnel * bg, 1e-12);
+        EXPECT_EQ(rays.secondary, 2u);
+    }
+}
+
 // A ray inside a glass sphere meeting its surface at sin(theta) = 0.9 > 1 / 1.5 is totally
 // reflected, and the reflection meets the surface at the same angle again: every hit pushes one
 // ray with weight * transmit, nothing reaches the background.
@@ -202,6 +221,53 @@ TEST(Shading, GlassTotalInternalReflection) {
     value = reference::traceRadiance(scene, {{0.0, 0.5, 0.0}, {1.0, 0.0, 0.0}}, {0, 0}, 2, rays);
     EXPECT_GT(value.b, 0.1);
     EXPECT_EQ(rays.secondary, 2u) << "reflected and refracted";
+}
+
+// A triangle in z = 0 whose vertex normals all lean towards +x: shading must use that normal,
+// not the triangle's own (0, 0, 1). Seen straight down -z at its centre.
+Scene leaningTriangle(const Material &m) {
+    Scene scene = test::sceneWithDefaultMaterial();
+    uint32_t id = test::addMaterial(scene, m);
+    test::addTriangle(scene, {-2, -2, 0}, {2, -2, 0}, {0, 2, 0}, id);
+    Triangle &t = scene.triangles[0];
+    t.hasNormals = true;
+    t.n[0] = t.n[1] = t.n[2] = glm::normalize(glm::vec3(0.3f, 0.0f, 1.0f));
+    scene.background = {0.0f, 0.0f, 0.0f};
+    return scene;
+}
+
+TEST(Shading, SmoothTriangleIsLitByItsInterpolatedNormal) {
+    Material m;
+    m.name = "matte";
+    m.color = {1.0f, 1.0f, 1.0f};
+    m.ambient = 0.0f;
+    m.diffuse = 0.8f;
+    Scene scene = leaningTriangle(m);
+    scene.lights.push_back(Light{{3, 0, 3}, {1, 1, 1}, 0.0f});
+    RayCounts rays;
+    glm::dvec3 value =
+        reference::traceRadiance(scene, {{0.0, 0.0, 1.0}, {0.0, 0.0, -1.0}}, {0, 0}, 1, rays);
+    glm::dvec3 n = glm::normalize(glm::dvec3(glm::vec3(scene.triangles[0].n[0])));
+    double nDotL = glm::dot(n, glm::normalize(glm::dvec3(3, 0, 3))); // 0.88; (0, 0, 1) gives 0.71
+    expectNear(value, glm::dvec3(double(m.diffuse) * nDotL), 1e-12);
+}
+
+TEST(Shading, SmoothMirrorReflectsAboutItsInterpolatedNormal) {
+    Scene scene = leaningTriangle(test::opticalMaterial("mirror", 1.0f, 0.0f));
+    glm::dvec3 n = glm::normalize(glm::dvec3(glm::vec3(scene.triangles[0].n[0])));
+    glm::dvec3 mirrored = glm::reflect(glm::dvec3(0, 0, -1), n);
+    // A self-lit red sphere where the mirrored ray goes (the flat normal sends it back up +z).
+    Material red;
+    red.name = "red";
+    red.color = {1.0f, 0.0f, 0.0f};
+    red.ambient = 1.0f;
+    red.diffuse = 0.0f;
+    uint32_t id = test::addMaterial(scene, red);
+    scene.spheres.push_back(Sphere{glm::vec3(5.0 * mirrored), 1.0f, id});
+    RayCounts rays;
+    glm::dvec3 value =
+        reference::traceRadiance(scene, {{0.0, 0.0, 1.0}, {0.0, 0.0, -1.0}}, {0, 0}, 2, rays);
+    expectNear(value, {1.0, 0.0, 0.0}, 1e-12);
 }
 
 // A spherical light partly hidden behind an occluder gives a wider partial shadow than a point
