@@ -116,6 +116,17 @@ TEST(Shading, LightBehindTheSurfaceTracesNoShadowRay) {
 }
 
 // An ortho camera looks straight down -z at a mirror plane; reflected rays go back up +z.
+// A red that shines by its ambient term alone: what a mirror shows of it is its colour times
+// the scene's ambient, whatever the lights.
+uint32_t addSelfLitRed(Scene &scene) {
+    Material red;
+    red.name = "red";
+    red.color = {1.0f, 0.0f, 0.0f};
+    red.ambient = 1.0f;
+    red.diffuse = 0.0f;
+    return test::addMaterial(scene, red);
+}
+
 Scene mirrorScene(float reflect) {
     Scene scene = test::sceneWithDefaultMaterial();
     Material mirror = test::opticalMaterial("mirror", reflect, 0.0f);
@@ -144,12 +155,7 @@ TEST(Shading, MirrorReflectsTheBackground) {
 TEST(Shading, MirrorShowsWhatIsBehindTheCamera) {
     Scene scene = mirrorScene(1.0f);
     scene.materials[1].ambient = 0.0f;
-    Material red;
-    red.name = "red";
-    red.color = {1.0f, 0.0f, 0.0f};
-    red.ambient = 1.0f;
-    red.diffuse = 0.0f;
-    uint32_t id = test::addMaterial(scene, red);
+    uint32_t id = addSelfLitRed(scene);
     scene.spheres.push_back(Sphere{{0, 0, 30}, 10.0f, id}); // behind the camera
     scene.ambient = {0.5f, 0.5f, 0.5f};
     RenderedImage image = render(scene, 4, 4);
@@ -257,13 +263,8 @@ TEST(Shading, SmoothMirrorReflectsAboutItsInterpolatedNormal) {
     glm::dvec3 n = glm::normalize(glm::dvec3(glm::vec3(scene.triangles[0].n[0])));
     glm::dvec3 mirrored = glm::reflect(glm::dvec3(0, 0, -1), n);
     // A self-lit red sphere where the mirrored ray goes (the flat normal sends it back up +z).
-    Material red;
-    red.name = "red";
-    red.color = {1.0f, 0.0f, 0.0f};
-    red.ambient = 1.0f;
-    red.diffuse = 0.0f;
-    uint32_t id = test::addMaterial(scene, red);
-    scene.spheres.push_back(Sphere{glm::vec3(5.0 * mirrored), 1.0f, id});
+    uint32_t id = addSelfLitRed(scene);
+    scene.spheres.push_back(Sphere{5.0 * mirrored, 1.0f, id});
     RayCounts rays;
     glm::dvec3 value =
         reference::traceRadiance(scene, {{0.0, 0.0, 1.0}, {0.0, 0.0, -1.0}}, {0, 0}, 2, rays);
