@@ -38,6 +38,9 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     f.texelBuffers = options.texelBuffers;
     f.writeAov = options.writeAov;
     f.adaptiveGrid = grid.adaptive();
+    if (options.profile > 2)
+        throw Error("profile level " + std::to_string(options.profile) + " is outside 0..2");
+    f.profile = options.profile;
     f.shadows = options.shadows;
     f.reflection = f.reflection && options.reflection;
     f.transmission = f.transmission && options.transmission;
@@ -57,7 +60,8 @@ std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
             {gpu::kSpecWriteAov, writeAov},
             {gpu::kSpecStackSize, stackSize},
             {gpu::kSpecTexelBuffers, texelBuffers},
-            {gpu::kSpecAdaptiveGrid, adaptiveGrid}};
+            {gpu::kSpecAdaptiveGrid, adaptiveGrid},
+            {gpu::kSpecProfileWalkDetail, profile >= 2}};
 }
 
 } // namespace prism

@@ -51,6 +51,8 @@ PRISM_CONST(uint, kSpecHasEnvironment, 8u); // misses see Scene::environment, no
 PRISM_CONST(uint, kSpecStackSize, 9u);      // 2 * maxDepth - 1
 PRISM_CONST(uint, kSpecTexelBuffers, 10u);
 PRISM_CONST(uint, kSpecAdaptiveGrid, 11u); // walk the adaptive grid's cells, not a regular DDA
+// Only in the profiling build (PRISM_PROFILE): also time the primitive loops (profile.glsl).
+PRISM_CONST(uint, kSpecProfileWalkDetail, 20u);
 
 PRISM_NAMESPACE_END
 
