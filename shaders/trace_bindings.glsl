@@ -21,10 +21,15 @@ layout(constant_id = kSpecStackSize) const uint STACK_SIZE = 9u;
 // lavapipe, and not capped at maxStorageBufferRange; docs/benchmarks.md).
 layout(constant_id = kSpecTexelBuffers) const bool TEXEL_BUFFERS = false;
 layout(constant_id = kSpecAdaptiveGrid) const bool ADAPTIVE_GRID = false;
+layout(constant_id = kSpecResumable) const bool RESUMABLE = false;
 
 layout(set = 0, binding = kBindingAccumImage, rgba32f) uniform image2D accumImage;
 layout(set = 0, binding = kBindingAovImage, rgba32f) uniform writeonly image2D aovImage;
 layout(std430, set = 0, binding = kBindingStats) buffer StatsBuffer { GpuStats stats; };
+layout(std430, set = 0, binding = kBindingResumeRecords) buffer ResumeRecordBuffer {
+    GpuResumeRecord resumeRecords[];
+};
+layout(std430, set = 0, binding = kBindingWalkLog) buffer WalkLogBuffer { uvec4 walkLog[]; };
 layout(std430, set = 0, binding = kBindingHeader) readonly buffer HeaderBuffer {
     GpuSceneHeader header;
 };

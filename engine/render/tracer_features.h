@@ -27,6 +27,13 @@ struct TracerOptions {
     // phase (shaders/profile.glsl; needs a context with shaderClock); 2 also around the
     // primitive loops inside the walks.
     uint32_t profile = 0;
+    // Resumable tracing (shaders/resume.glsl) from the first frame rather than only after a
+    // frame overran lavapipe's loop limit; with a lane budget (loop iterations per dispatch,
+    // 0: the shader's default) and a memory budget for its records and logs. Tests use small
+    // budgets to interrupt ordinary scenes everywhere.
+    bool resumable = false;
+    uint32_t resumeLaneBudget = 0;
+    uint64_t resumeMemoryBytes = uint64_t(64) << 20;
 };
 
 struct TracerFeatures {
@@ -40,9 +47,11 @@ struct TracerFeatures {
     bool shadows = true;
     bool writeAov = false;
     uint32_t maxDepth = 5;
-    bool texelBuffers = false; // arrays with texel views read through them
-    bool adaptiveGrid = false; // the grid is adaptive (accel/grid.h)
-    uint32_t profile = 0;      // TracerOptions::profile
+    bool texelBuffers = false;     // arrays with texel views read through them
+    bool adaptiveGrid = false;     // the grid is adaptive (accel/grid.h)
+    uint32_t profile = 0;          // TracerOptions::profile
+    bool resumable = false;        // loop budget and resumption (shaders/resume.glsl)
+    uint32_t resumeLaneBudget = 0; // TracerOptions::resumeLaneBudget
 
     bool has(uint32_t kind) const { return (kinds >> kind) & 1u; }
     std::vector<vk::SpecializationConstant> specialization() const;
