@@ -50,7 +50,8 @@ PRISM_CONST(uint, kSpecWriteAov, 7u);
 PRISM_CONST(uint, kSpecHasEnvironment, 8u); // misses see Scene::environment, not the background
 PRISM_CONST(uint, kSpecStackSize, 9u);      // 2 * maxDepth - 1
 PRISM_CONST(uint, kSpecTexelBuffers, 10u);
-PRISM_CONST(uint, kSpecAdaptiveGrid, 11u); // walk the adaptive grid's cells, not a regular DDA
+PRISM_CONST(uint, kSpecAdaptiveGrid, 11u);   // walk the adaptive grid's cells, not a regular DDA
+PRISM_CONST(uint, kSpecHasSurfaceMaps, 12u); // some material has a normal or bump map
 
 PRISM_NAMESPACE_END
 
