@@ -62,9 +62,10 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         s.shadowPosition = s.position;
         s.smoothed = false;
         s.uv = vec2(0.5 + atan(n.z, n.x) / (2.0 * kPi), 0.5 + asin(clamp(n.y, -1.0, 1.0)) / kPi);
-        // u turns with atan2(z, x), v climbs with asin(y); both zero at the poles.
-        s.dpdu = vec3(-n.z, 0.0, n.x);
-        s.dpdv = vec3(-n.y * n.x, n.x * n.x + n.z * n.z, -n.y * n.z);
+        if (HAS_SURFACE_MAPS) { // u turns with atan2(z, x), v climbs with asin(y); 0 at poles
+            s.dpdu = vec3(-n.z, 0.0, n.x);
+            s.dpdv = vec3(-n.y * n.x, n.x * n.x + n.z * n.z, -n.y * n.z);
+        }
         s.material = sphereMaterial(sphere);
     } else if (HAS_PLANES && hit.kind == kKindPlane) {
         GpuPlane plane = planeAt(hit.index);
