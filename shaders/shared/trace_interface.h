@@ -53,7 +53,8 @@ PRISM_CONST(uint, kSpecWriteAov, 7u);
 PRISM_CONST(uint, kSpecHasEnvironment, 8u); // misses see Scene::environment, not the background
 PRISM_CONST(uint, kSpecStackSize, 9u);      // 2 * maxDepth - 1
 PRISM_CONST(uint, kSpecTexelBuffers, 10u);
-PRISM_CONST(uint, kSpecAdaptiveGrid, 11u); // walk the adaptive grid's cells, not a regular DDA
+PRISM_CONST(uint, kSpecAdaptiveGrid, 11u);   // walk the adaptive grid's cells, not a regular DDA
+PRISM_CONST(uint, kSpecHasSurfaceMaps, 12u); // some material has a normal or bump map
 // Only in the profiling build (PRISM_PROFILE): also time the primitive loops (profile.glsl).
 PRISM_CONST(uint, kSpecProfileWalkDetail, 20u);
 // Trace with a loop budget and resume where it ran out in the next dispatch (resume.glsl).
