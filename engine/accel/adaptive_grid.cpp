@@ -76,6 +76,10 @@ public:
             referencesAfter(refs, voxelMin, sizeShift, split); // the ranges binning reads
         for (uint32_t d = split; d >= 1 && style_.costModel; --d) {
             double parts = double(1u << d);
+            // Each ref lands in one part at least: a split whose cost with n references does
+            // not beat the best is not counted (the same choice, without the counting).
+            if (kStepCost * 1.5 * parts + double(n) / (parts * parts) >= bestCost)
+                continue;
             double cost = kStepCost * 1.5 * parts +
                           double(referencesAfter(refs, voxelMin, sizeShift, d)) / (parts * parts);
             if (cost < bestCost) {

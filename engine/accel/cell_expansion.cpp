@@ -10,29 +10,32 @@
 namespace prism {
 namespace {
 
-// A cell's box as built (the boxes tile the voxel grid then) and its primitive count, in 16
-// bytes: the expansion's time goes mostly to fetching these for neighbours, so they are small
-// and unpacked once.
+// A cell's box as built (the boxes tile the voxel grid then) and where its primitives start, in
+// 16 bytes: the expansion's time goes mostly to fetching these for neighbours, so they are
+// small, unpacked once, and a cell's count comes from the next record, usually in the same
+// cache line. One more record at the end holds the references' end.
 struct CellRecord {
     std::array<uint16_t, 3> lo, hi;
-    uint32_t count;
+    uint32_t first; // cellPrimitives[first .. (this + 1)->first)
 
     int min(int axis) const { return lo[size_t(axis)]; }
     int max(int axis) const { return hi[size_t(axis)]; }
+    uint32_t count() const { return (this + 1)->first - first; }
 };
 static_assert(sizeof(CellRecord) == 16);
 
 std::vector<CellRecord> cellRecords(const Grid &grid) {
-    std::vector<CellRecord> records(grid.cellBoxes.size());
-    for (size_t c = 0; c < records.size(); ++c) {
+    std::vector<CellRecord> records(grid.cellBoxes.size() + 1);
+    for (size_t c = 0; c < grid.cellBoxes.size(); ++c) {
         glm::ivec3 lo, hi;
         unpackCellBox(grid.cellBoxes[c], lo, hi);
         for (int a = 0; a < 3; ++a) {
             records[c].lo[size_t(a)] = uint16_t(lo[a]);
             records[c].hi[size_t(a)] = uint16_t(hi[a]);
         }
-        records[c].count = grid.cellStart[c + 1] - grid.cellStart[c];
+        records[c].first = grid.cellStart[c];
     }
+    records.back().first = grid.cellStart.back();
     return records;
 }
 
@@ -41,7 +44,7 @@ struct Rect {
     int u0, u1, w0, w1;
 };
 
-// Calls visit(cell, its record) for the cells that the one-voxel layer [lo, hi) across `axis`
+// Calls visit(cell record) for the cells that the one-voxel layer [lo, hi) across `axis`
 // meets, until one returns false; returns whether all returned true. The boxes as built tile the
 // grid, so the cell holding a rectangle's first corner covers a rectangle of it at once, and
 // the two rectangles left are queried in turn: one lookup per cell (a cell cut by the split
@@ -57,9 +60,8 @@ bool eachCellInLayer(const Grid &grid, const std::vector<CellRecord> &cells, glm
         stack.pop_back();
         corner[u] = r.u0;
         corner[w] = r.w0;
-        uint32_t cell = adaptiveCellAt(grid, corner);
-        const CellRecord &n = cells[cell];
-        if (!visit(cell, n))
+        const CellRecord &n = cells[adaptiveCellAt(grid, corner)];
+        if (!visit(n))
             return false;
         int coveredU = std::min(r.u1, n.max(u)), coveredW = std::min(r.w1, n.max(w));
         if (coveredU < r.u1)
@@ -77,8 +79,8 @@ glm::uvec4 expandedBox(const Grid &grid, const std::vector<CellRecord> &cells, u
     const CellRecord &self = cells[cell];
     glm::ivec3 lo, hi;
     unpackCellBox(grid.cellBoxes[cell], lo, hi);
-    auto first = grid.cellPrimitives.begin() + grid.cellStart[cell];
-    auto last = first + self.count;
+    uint32_t count = self.count();
+    auto first = grid.cellPrimitives.begin() + self.first, last = first + count;
     // A face that failed stays failed: its layer does not move, and only widens as the other
     // faces grow, so the neighbour that failed it is still there. Skipping it changes nothing.
     std::array<bool, 6> failed{};
@@ -101,12 +103,12 @@ glm::uvec4 expandedBox(const Grid &grid, const std::vector<CellRecord> &cells, u
             }
             int step = resolution[axis];
             bool allowed = eachCellInLayer(
-                grid, cells, layerLo, layerHi, axis, stack,
-                [&](uint32_t neighbour, const CellRecord &n) {
-                    if (n.count > self.count)
+                grid, cells, layerLo, layerHi, axis, stack, [&](const CellRecord &n) {
+                    uint32_t nCount = n.count();
+                    if (nCount > count)
                         return false;
-                    auto nFirst = grid.cellPrimitives.begin() + grid.cellStart[neighbour];
-                    if (n.count > 0 && !std::includes(first, last, nFirst, nFirst + n.count))
+                    auto nFirst = grid.cellPrimitives.begin() + n.first;
+                    if (nCount > 0 && !std::includes(first, last, nFirst, nFirst + nCount))
                         return false;
                     step = std::min(step, up ? n.max(axis) - hi[axis] : lo[axis] - n.min(axis));
                     return true;
