@@ -11,6 +11,7 @@
 #include "accel/cell_binner.h"
 #include "accel/cell_expansion.h"
 #include "accel/grid_fragments.h"
+#include "accel/part_lists.h"
 #include "core/error.h"
 #include "core/parallel_for.h"
 #include "shared/gpu_types.h"
@@ -32,15 +33,6 @@ uint32_t chooseShift(const glm::ivec3 &topResolution, uint32_t maxDepth) {
         ++shift;
     return shift;
 }
-
-// The cells [lo, hi] (inclusive) of a lattice that a primitive's bounding box meets.
-struct CellRange {
-    glm::ivec3 lo, hi;
-    size_t cells() const {
-        glm::ivec3 span = hi - lo + 1;
-        return size_t(span.x) * size_t(span.y) * size_t(span.z);
-    }
-};
 
 class Splitter {
 public:
@@ -94,26 +86,14 @@ public:
         split = best;
         uint32_t childShift = sizeShift - split, parts = 1u << split;
         Lattice children = childLattice(voxelMin, sizeShift, split);
-        // Each part's list, by bounding box, in one array (a counting sort over the ranges
-        // found when the split was priced; refs keep their order within a part).
-        std::vector<uint32_t> childStart(children.count() + 1, 0u), childRefs;
-        const std::vector<CellRange> &ranges = ranges_[split];
-        forEachPart(ranges, children, [&](size_t, uint32_t part) { ++childStart[part + 1]; });
-        size_t fullest = 0;
-        for (size_t part = 0; part < children.count(); ++part) {
-            fullest = std::max<size_t>(fullest, childStart[part + 1]);
-            childStart[part + 1] += childStart[part];
-        }
-        childRefs.resize(childStart.back());
-        std::vector<uint32_t> cursor(childStart.begin(), childStart.end() - 1);
-        forEachPart(ranges, children,
-                    [&](size_t i, uint32_t part) { childRefs[cursor[part]++] = refs[i]; });
-        cursor = {};
+        // Each part's list, by bounding box, sorted by the ranges found when the split was
+        // priced.
+        PartLists childRefs = sortIntoParts(ranges_[split], children, refs);
         // A split that leaves some part with every primitive may still help further down (a
         // small cluster in a big cell), but three in a row mean the primitives cannot be told
         // apart (all in one point, a fan around one vertex): the cell stays whole. This also
         // bounds the work and the empty cells such scenes cost.
-        idleSplits = fullest >= n ? idleSplits + 1 : 0;
+        idleSplits = childRefs.fullest >= n ? idleSplits + 1 : 0;
         if (idleSplits >= kMaxIdleSplits) {
             makeLeaf(entry, voxelMin, sizeShift, refs);
             return;
@@ -126,14 +106,13 @@ public:
         out_.entries[entry] = uint32_t(first) << 4 | split;
         out_.depth = std::max(out_.depth, level + 1);
         if (style_.mergeEmptyParts)
-            mergeEmptyParts(uint32_t(first), children, childShift, childStart);
+            mergeEmptyParts(uint32_t(first), children, childShift, childRefs);
         for (int z = 0; z < int(parts); ++z)
             for (int y = 0; y < int(parts); ++y)
                 for (int x = 0; x < int(parts); ++x) {
                     glm::ivec3 cell = children.lo + glm::ivec3(x, y, z);
                     uint32_t local = children.local(cell);
-                    std::span<const uint32_t> list(childRefs.data() + childStart[local],
-                                                   childStart[local + 1] - childStart[local]);
+                    std::span<const uint32_t> list = childRefs.list(local);
                     if (!style_.mergeEmptyParts || !list.empty())
                         build(uint32_t(first) + local, cell << int(childShift), childShift,
                               level + 1, idleSplits, list);
@@ -166,19 +145,6 @@ private:
             references += ranges[i].cells();
         }
         return references;
-    }
-
-    // Calls visit(i, part) for each part (numbered in `parts`) of ranges[i], for every i.
-    template <typename Visit>
-    static void forEachPart(const std::vector<CellRange> &ranges, const Lattice &parts,
-                            Visit visit) {
-        for (size_t i = 0; i < ranges.size(); ++i) {
-            const CellRange &r = ranges[i];
-            for (int z = r.lo.z; z <= r.hi.z; ++z)
-                for (int y = r.lo.y; y <= r.hi.y; ++y)
-                    for (int x = r.lo.x; x <= r.hi.x; ++x)
-                        visit(i, parts.local({x, y, z}));
-        }
     }
 
     bool budgetSpent() const { return out_.entries.size() + out_.cellBoxes.size() > budget_; }
@@ -214,12 +180,12 @@ private:
     // commonest case). Surfaces leave most parts of a split empty; one cell per part made most
     // of the adaptive grid's cells, memory and expansion work.
     void mergeEmptyParts(uint32_t first, const Lattice &parts, uint32_t childShift,
-                         const std::vector<uint32_t> &childStart) {
+                         const PartLists &childRefs) {
         glm::ivec3 size = parts.size();
         std::vector<bool> taken(parts.count());
         auto untaken = [&](glm::ivec3 c) { // an empty part not yet in a merged cell
             uint32_t i = uint32_t(c.x + size.x * (c.y + size.y * c.z));
-            return childStart[i + 1] == childStart[i] && !taken[i];
+            return childRefs.empty(i) && !taken[i];
         };
         auto untakenBox = [&](glm::ivec3 lo, glm::ivec3 hi) {
             for (int z = lo.z; z < hi.z; ++z)
@@ -286,17 +252,23 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
                         const AdaptiveStyle &style) {
     grid.shift = chooseShift(grid.resolution, style.maxDepth);
     Lattice top = wholeGrid(grid);
-    // Bounding boxes, computed once: every level above the leaves bins by them.
+    // Bounding boxes, computed once: every level above the leaves bins by them, as the top
+    // grid does here (their ranges found in parallel, then sorted: ids ascending in a cell).
     std::vector<Aabb> bounds(primitives.count());
+    std::vector<CellRange> ranges(primitives.count());
+    std::vector<uint32_t> ids(primitives.count());
+    CellBinner binner(top);
     constexpr size_t kBlock = 4096;
     parallelFor((bounds.size() + kBlock - 1) / kBlock, [&](size_t block) {
-        for (size_t id = block * kBlock; id < std::min(bounds.size(), (block + 1) * kBlock); ++id)
+        for (size_t id = block * kBlock; id < std::min(bounds.size(), (block + 1) * kBlock); ++id) {
             bounds[id] = primitives.bounds(uint32_t(id));
+            binner.boundsRange(bounds[id], ranges[id].lo, ranges[id].hi);
+            ids[id] = uint32_t(id);
+        }
     });
-    CellBinner binner(top);
-    std::vector<std::vector<uint32_t>> topRefs(top.count());
-    for (uint32_t id = 0; id < primitives.count(); ++id)
-        binner.binBounds(id, bounds[id], topRefs); // ids ascending in a cell
+    PartLists topRefs = sortIntoParts(ranges, top, ids);
+    ranges = {};
+    ids = {};
 
     // Cells and entries at most ~64 per primitive a top cell holds (and a floor for small
     // cells): a safety net on memory and build time, far above what the cost model asks for.
@@ -305,11 +277,11 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
         glm::ivec3 cell(int(t % uint32_t(grid.resolution.x)),
                         int(t / uint32_t(grid.resolution.x) % uint32_t(grid.resolution.y)),
                         int(t / (uint64_t(grid.resolution.x) * uint32_t(grid.resolution.y))));
-        size_t budget = 64 * topRefs[t].size() + 4096;
+        std::span<const uint32_t> refs = topRefs.list(t);
+        size_t budget = 64 * refs.size() + 4096;
         Splitter splitter(fragments[t], grid, primitives, bounds, double(options.density),
                           top.magnitude, budget, style);
-        splitter.build(0, cell << int(grid.shift), grid.shift, 0, 0, topRefs[t]);
-        topRefs[t] = {};
+        splitter.build(0, cell << int(grid.shift), grid.shift, 0, 0, refs);
     });
     joinFragments(grid, fragments);
     if (style.expand)

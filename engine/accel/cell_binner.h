@@ -55,18 +55,6 @@ public:
                         pairs.emplace_back(lattice_.local({x, y, z}), id);
     }
 
-    // Appends `id` to lists[local cell] for every cell of the window its `bounds` (grown by
-    // the slack) overlaps: a superset of the cells it overlaps, without an exact test.
-    void binBounds(uint32_t id, const Aabb &bounds,
-                   std::vector<std::vector<uint32_t>> &lists) const {
-        glm::ivec3 lo, hi;
-        boundsRange(bounds, lo, hi);
-        for (int z = lo.z; z <= hi.z; ++z)
-            for (int y = lo.y; y <= hi.y; ++y)
-                for (int x = lo.x; x <= hi.x; ++x)
-                    lists[lattice_.local({x, y, z})].push_back(id);
-    }
-
     // The cells [lo, hi] (inclusive) of the window that `bounds`, grown by the slack, overlaps:
     // every cell a primitive with those bounds overlaps, and perhaps some more.
     void boundsRange(const Aabb &bounds, glm::ivec3 &lo, glm::ivec3 &hi) const {

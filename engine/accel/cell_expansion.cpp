@@ -24,17 +24,20 @@ struct CellRecord {
 };
 static_assert(sizeof(CellRecord) == 16);
 
-std::vector<CellRecord> cellRecords(const Grid &grid) {
-    std::vector<CellRecord> records(grid.cellBoxes.size() + 1);
-    for (size_t c = 0; c < grid.cellBoxes.size(); ++c) {
-        glm::ivec3 lo, hi;
-        unpackCellBox(grid.cellBoxes[c], lo, hi);
-        for (int a = 0; a < 3; ++a) {
-            records[c].lo[size_t(a)] = uint16_t(lo[a]);
-            records[c].hi[size_t(a)] = uint16_t(hi[a]);
+std::vector<CellRecord> cellRecords(const Grid &grid, size_t block) {
+    size_t cells = grid.cellBoxes.size();
+    std::vector<CellRecord> records(cells + 1);
+    parallelFor((cells + block - 1) / block, [&](size_t b) {
+        for (size_t c = b * block; c < std::min(cells, (b + 1) * block); ++c) {
+            glm::ivec3 lo, hi;
+            unpackCellBox(grid.cellBoxes[c], lo, hi);
+            for (int a = 0; a < 3; ++a) {
+                records[c].lo[size_t(a)] = uint16_t(lo[a]);
+                records[c].hi[size_t(a)] = uint16_t(hi[a]);
+            }
+            records[c].first = grid.cellStart[c];
         }
-        records[c].first = grid.cellStart[c];
-    }
+    });
     records.back().first = grid.cellStart.back();
     return records;
 }
@@ -137,7 +140,7 @@ void expandCells(Grid &grid) {
     // in blocks of kBlock, with the same result on every run.
     constexpr size_t kBlock = 256;
     size_t cells = grid.cellBoxes.size();
-    std::vector<CellRecord> records = cellRecords(grid);
+    std::vector<CellRecord> records = cellRecords(grid, kBlock);
     std::vector<glm::uvec4> grown(cells);
     parallelFor((cells + kBlock - 1) / kBlock, [&](size_t block) {
         std::vector<Rect> stack;
