@@ -24,6 +24,7 @@ struct CellRecord {
 };
 static_assert(sizeof(CellRecord) == 16);
 
+// In blocks of `block` cells, in parallel.
 std::vector<CellRecord> cellRecords(const Grid &grid, size_t block) {
     size_t cells = grid.cellBoxes.size();
     std::vector<CellRecord> records(cells + 1);
@@ -140,7 +141,7 @@ void expandCells(Grid &grid) {
     // in blocks of kBlock, with the same result on every run.
     constexpr size_t kBlock = 256;
     size_t cells = grid.cellBoxes.size();
-    std::vector<CellRecord> records = cellRecords(grid, kBlock);
+    std::vector<CellRecord> records = cellRecords(grid, 64 * kBlock);
     std::vector<glm::uvec4> grown(cells);
     parallelFor((cells + kBlock - 1) / kBlock, [&](size_t block) {
         std::vector<Rect> stack;

@@ -62,9 +62,13 @@ void joinFragments(Grid &grid, std::vector<Fragment> &fragments) {
     grid.cellStart.resize(end.cell + 1);
     grid.cellStart[end.cell] = uint32_t(end.reference);
     grid.cellPrimitives.resize(end.reference);
-    parallelFor(fragments.size(), [&](size_t t) {
-        copyFragment(grid, uint32_t(t), fragments[t], bases[t]);
-        fragments[t] = {};
+    // In blocks of fragments: a small grid is copied without starting a thread.
+    constexpr size_t kBlock = 256;
+    parallelFor((fragments.size() + kBlock - 1) / kBlock, [&](size_t block) {
+        for (size_t t = block * kBlock; t < std::min(fragments.size(), (block + 1) * kBlock); ++t) {
+            copyFragment(grid, uint32_t(t), fragments[t], bases[t]);
+            fragments[t] = {};
+        }
     });
 }
 
