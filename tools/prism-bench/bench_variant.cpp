@@ -33,13 +33,15 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.tracer.transmission = false;
         } else if (token == "no-shadows") {
             v.tracer.shadows = false;
+        } else if (token == "resumable") {
+            v.tracer.resumable = true;
         } else if (token == "texel" || token == "storage") {
             v.tracer.texelBuffers = token == "texel";
         } else {
             throw Error("variant " + text + ": unknown part '" + token +
                         "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
                         "no-reflection, "
-                        "no-refraction, no-shadows, texel, storage; join with +)");
+                        "no-refraction, no-shadows, texel, storage, resumable; join with +)");
         }
     }
     return v;

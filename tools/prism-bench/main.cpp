@@ -131,7 +131,7 @@ int main(int argc, char **argv) {
            "Comma-separated variants: auto, regular, off, adaptive, two-level, grid=N|NxNyNz, "
            "density=L, "
            "no-reflection, no-refraction, no-shadows, texel or storage (how the hot arrays are "
-           "read); join parts with +")
+           "read), resumable (the loop-budget tracer from the first frame); join parts with +")
         ->default_val(variantList);
     std::string baseline;
     app.add_option("--baseline", baseline,
