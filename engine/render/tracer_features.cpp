@@ -45,8 +45,10 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     f.resumable = options.resumable;
     f.resumeLaneBudget = options.resumeLaneBudget;
     f.shadows = options.shadows;
-    f.reflection = f.reflection && options.reflection;
-    f.transmission = f.transmission && options.transmission;
+    // At depth 1 no ray is ever reflected or refracted: compile that code out too (lavapipe
+    // would otherwise run it, masked, for every hit).
+    f.reflection = f.reflection && options.reflection && options.maxDepth > 1;
+    f.transmission = f.transmission && options.transmission && options.maxDepth > 1;
     return f;
 }
 
