@@ -1,6 +1,8 @@
 #include "render/tracer_features.h"
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <string>
 
 #include "core/error.h"
@@ -41,6 +43,11 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     f.shadows = options.shadows;
     f.reflection = f.reflection && options.reflection;
     f.transmission = f.transmission && options.transmission;
+    if (!std::isfinite(options.fixedRayOffset) || options.fixedRayOffset < 0.0f)
+        throw Error("fixed ray offset " + std::to_string(options.fixedRayOffset) +
+                    " is not a finite number >= 0 (0: Prism's relative offset)");
+    f.fixedRayOffset = options.fixedRayOffset;
+    f.mollerTrumbore = options.mollerTrumbore;
     return f;
 }
 
@@ -57,7 +64,10 @@ std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
             {gpu::kSpecWriteAov, writeAov},
             {gpu::kSpecStackSize, stackSize},
             {gpu::kSpecTexelBuffers, texelBuffers},
-            {gpu::kSpecAdaptiveGrid, adaptiveGrid}};
+            {gpu::kSpecAdaptiveGrid, adaptiveGrid},
+            {gpu::kSpecFixedRayOffset, std::bit_cast<uint32_t>(fixedRayOffset)},
+            {gpu::kSpecTriangleTest,
+             mollerTrumbore ? gpu::kTriangleTestMollerTrumbore : gpu::kTriangleTestWatertight}};
 }
 
 } // namespace prism

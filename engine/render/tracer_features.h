@@ -23,6 +23,11 @@ struct TracerOptions {
     // Largest storage buffer to use, in bytes; 0: the device's maxStorageBufferRange. Tests
     // lower it to check that an oversized array is refused, or read through its texel view.
     uint64_t storageBufferLimit = 0;
+    // For the studies only (prism-bench variants, docs/studies): the original's fixed offset of
+    // secondary-ray origins along the normal, in scene units (0: Prism's relative offset), and
+    // the common Moller-Trumbore triangle test instead of the watertight one.
+    float fixedRayOffset = 0.0f;
+    bool mollerTrumbore = false;
 };
 
 struct TracerFeatures {
@@ -36,8 +41,10 @@ struct TracerFeatures {
     bool shadows = true;
     bool writeAov = false;
     uint32_t maxDepth = 5;
-    bool texelBuffers = false; // arrays with texel views read through them
-    bool adaptiveGrid = false; // the grid is adaptive (accel/grid.h)
+    bool texelBuffers = false;   // arrays with texel views read through them
+    bool adaptiveGrid = false;   // the grid is adaptive (accel/grid.h)
+    float fixedRayOffset = 0.0f; // TracerOptions::fixedRayOffset
+    bool mollerTrumbore = false; // TracerOptions::mollerTrumbore
 
     bool has(uint32_t kind) const { return (kinds >> kind) & 1u; }
     std::vector<vk::SpecializationConstant> specialization() const;
