@@ -21,6 +21,11 @@ struct BenchSettings {
     // Also trace each scene's camera and shadow rays with Intel Embree on all cores (the
     // baseline of issue 11), interleaved with the variants' frames: a row named "embree".
     bool embreeBaseline = false;
+    // For the studies (docs/studies): keep the scene's file origin instead of moving it to the
+    // camera (scene/scene_origin.h), to show what that centring protects against; and, when not
+    // empty, write each variant's warm-up frame to imageDir/SCENE_VARIANT.exr.
+    bool keepOrigin = false;
+    std::string imageDir;
 };
 
 struct BenchResult {
