@@ -7,6 +7,9 @@
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
+#ifdef PRISM_PROFILE
+#extension GL_ARB_shader_clock : require // profile.glsl
+#endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -15,6 +18,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "shared/sampling.h"
 #include "trace_bindings.glsl"
 #include "loop_limit.glsl"
+#include "profile.glsl"
 #include "intersect.glsl"
 #include "traverse.glsl"
 #include "surface.glsl"
@@ -52,6 +56,7 @@ vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color,
     vec3 result = materialAmbient(m) * color * header.ambient.rgb;
     uint lights = headerLightCount(header);
     for (uint l = 0u; l < lights; ++l) {
+        uint shadowWalkNs = 0u;
         GpuLight light = lightAt(l);
         vec3 toLight = normalize(lightPosition(light) - s.position);
         float nDotL = dot(n, toLight);
@@ -79,7 +84,9 @@ vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color,
                     vec3 toTarget = target - origin;
                     float distance = length(toTarget);
                     gShadowRays += 1u;
+                    uint64_t walkStart = profileClock();
                     visible = !traceOccluded(origin, toTarget / distance, distance);
+                    shadowWalkNs = profileElapsed(walkStart);
                 }
             }
             if (visible) {
@@ -91,6 +98,8 @@ vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color,
                           (materialDiffuse(m) * color * nDotL + materialSpecular(m) * specular);
             }
         }
+        if (PROFILE) // every lane shading this bounce is active here
+            gBounceShadowNs += subgroupMax(shadowWalkNs);
     }
     return result;
 }
@@ -106,8 +115,11 @@ PendingRay gStack[STACK_SIZE];
 uint gStackSize = 0u;
 
 void pushRay(vec3 origin, vec3 dir, vec3 weight, uint depth) {
+    uint64_t start = profileClock();
     if (gStackSize < STACK_SIZE) // sized 2 * maxDepth - 1: never full, but never overrun
         gStack[gStackSize++] = PendingRay(origin, dir, weight, depth);
+    if (PROFILE)
+        gBouncePushNs += profileElapsed(start);
 }
 
 vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
@@ -115,11 +127,17 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
     vec3 radiance = vec3(0.0);
     pushRay(origin, dir, vec3(1.0), 1u);
     while (gStackSize > 0u) {
+        uint64_t popStart = profileClock();
         PendingRay ray = gStack[--gStackSize];
+        profileAdd(kPhaseStack, popStart);
         if (ray.depth > 1u)
             gSecondaryRays += 1u;
         Hit hit;
-        if (!traceClosest(ray.origin, ray.dir, kInfinity, hit)) {
+        uint64_t walkStart = profileClock();
+        bool hitSomething = traceClosest(ray.origin, ray.dir, kInfinity, hit);
+        profileAdd(ray.depth > 1u ? kPhaseSecondaryWalk : kPhasePrimaryWalk, walkStart);
+        uint64_t shadingStart = profileClock();
+        if (!hitSomething) {
             radiance += ray.weight * missColor(ray.dir);
         } else {
             Surface s = surfaceAt(ray.origin, ray.dir, hit);
@@ -160,6 +178,7 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
                 }
             }
         }
+        profileEndShading(shadingStart);
     }
     return radiance;
 }
@@ -176,6 +195,8 @@ void addCounts(uint primary, uint shadow, uint secondary, uint loopCut) {
 }
 
 void main() {
+    profileStart();
+    uint64_t invocationStart = profileClock();
     uvec2 pixel = gl_GlobalInvocationID.xy;
     bool inside = all(lessThan(pixel, frame.image.xy));
     uint pixelIndex = pixel.y * frame.image.x + pixel.x;
@@ -184,7 +205,9 @@ void main() {
     vec4 aov = vec4(0.0, 0.0, 0.0, kInfinity);
     if (inside) {
         vec3 origin, dir;
+        uint64_t cameraStart = profileClock();
         cameraRay(samplePosition(pixel, pixelIndex, sampleIndex), origin, dir);
+        profileAdd(kPhaseCamera, cameraStart);
         radiance = traceSample(origin, dir, pixelIndex, sampleIndex);
         if (WRITE_AOV && sampleIndex == 0u) {
             cameraRay(vec2(pixel) + 0.5, origin, dir);
@@ -195,6 +218,7 @@ void main() {
             }
         }
     }
+    uint64_t outputStart = profileClock();
     // Last, after every other loop of the invocation (loop_limit.glsl).
     bool cut = loopLimitReached();
     if (inside) {
@@ -206,4 +230,7 @@ void main() {
             imageStore(aovImage, ivec2(pixel), aov);
     }
     addCounts(inside ? 1u : 0u, gShadowRays, gSecondaryRays, (inside && cut) ? 1u : 0u);
+    profileAdd(kPhaseOutput, outputStart);
+    profileAdd(kPhaseTotal, invocationStart);
+    profileFlush();
 }

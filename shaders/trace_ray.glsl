@@ -47,6 +47,7 @@ bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
                     first = cellStartAt(cell);
                 }
                 uint end = cellStartAt(cell + 1u);
+                uint64_t testsStart = PROFILE_WALK_DETAIL ? profileClock() : 0ul;
 #if TRACE_RAY_ANY_HIT
                 for (uint k = first; k < end && hit.kind == kKindNone; ++k) {
 #else
@@ -54,6 +55,8 @@ bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
 #endif
                     testPrimitive(cellPrimitiveAt(k), origin, dir, wray, hit);
                 }
+                if (PROFILE_WALK_DETAIL)
+                    profileAdd(kPhasePrimitiveTests, testsStart);
 #if TRACE_RAY_ANY_HIT
                 // Any hit will do: stop at the first, or where the segment or the grid ends.
                 walking = hit.kind == kKindNone && tCellExit < min(tExit, tMax);

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cstring>
 
+#include "core/error.h"
 #include "core/timer.h"
 #include "render/frame_params.h"
 #include "shaders/trace.comp.spv.h"
+#include "shaders/trace_profile.comp.spv.h"
 #include "shared/trace_interface.h"
 #include "vk/barriers.h"
 
@@ -37,7 +39,12 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
       timestamps_(context) {
     createImages(width, height);
     vk::ComputePipelineDesc desc;
-    desc.spirv = std::span<const uint32_t>(kTraceCompSpv, sizeof(kTraceCompSpv) / 4);
+    if (features_.profile > 0 && !context.shaderClockEnabled())
+        throw Error("profiling needs a Vulkan context created with the shader clock");
+    desc.spirv =
+        features_.profile > 0
+            ? std::span<const uint32_t>(kTraceProfileCompSpv, sizeof(kTraceProfileCompSpv) / 4)
+            : std::span<const uint32_t>(kTraceCompSpv, sizeof(kTraceCompSpv) / 4);
     desc.bindings = traceDescriptorTypes();
     desc.specialization = features_.specialization();
     desc.pushConstantBytes = sizeof(gpu::GpuFrameParams);
@@ -96,6 +103,7 @@ FrameResult RayTracer::decodeCounters(const void *snapshot) {
     result.rays.shadow = stats.shadowRays;
     result.rays.secondary = stats.secondaryRays;
     result.loopCutPixels = stats.loopCutPixels;
+    std::copy(std::begin(stats.phaseNs), std::end(stats.phaseNs), result.phaseNs.begin());
     return result;
 }
 
@@ -183,6 +191,7 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
     FrameResult counted = decodeCounters(stats_.mapped());
     result.rays = counted.rays;
     result.loopCutPixels = counted.loopCutPixels;
+    result.phaseNs = counted.phaseNs;
     return result;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The ray-tracing pass: owns the scene's GPU buffers, the tracer pipeline for the scene's
 // feature set and the accumulation image; records sample dispatches and reads results back.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -9,6 +10,7 @@
 #include "core/ray_counts.h"
 #include "render/scene_buffers.h"
 #include "render/tracer_features.h"
+#include "shared/profile_phases.h"
 #include "vk/buffer.h"
 #include "vk/commands.h"
 #include "vk/compute_pipeline.h"
@@ -22,6 +24,9 @@ struct FrameResult {
     double gpuMs = 0.0; // from GPU timestamps, all sample dispatches of the frame
     RayCounts rays;
     uint64_t loopCutPixels = 0;
+    // With TracerOptions::profile: nanoseconds per phase (shared/profile_phases.h), summed over
+    // the frame's subgroups; zero otherwise.
+    std::array<uint64_t, gpu::kProfileSlots> phaseNs{};
 };
 
 struct TracedImage {

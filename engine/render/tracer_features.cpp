@@ -40,6 +40,9 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     f.texelBuffers = options.texelBuffers;
     f.writeAov = options.writeAov;
     f.adaptiveGrid = grid.adaptive();
+    if (options.profile > 2)
+        throw Error("profile level " + std::to_string(options.profile) + " is outside 0..2");
+    f.profile = options.profile;
     f.shadows = options.shadows;
     f.reflection = f.reflection && options.reflection;
     f.transmission = f.transmission && options.transmission;
@@ -65,6 +68,7 @@ std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
             {gpu::kSpecStackSize, stackSize},
             {gpu::kSpecTexelBuffers, texelBuffers},
             {gpu::kSpecAdaptiveGrid, adaptiveGrid},
+            {gpu::kSpecProfileWalkDetail, profile >= 2},
             {gpu::kSpecFixedRayOffset, std::bit_cast<uint32_t>(fixedRayOffset)},
             {gpu::kSpecTriangleTest,
              mollerTrumbore ? gpu::kTriangleTestMollerTrumbore : gpu::kTriangleTestWatertight}};

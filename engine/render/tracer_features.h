@@ -23,6 +23,10 @@ struct TracerOptions {
     // Largest storage buffer to use, in bytes; 0: the device's maxStorageBufferRange. Tests
     // lower it to check that an oversized array is refused, or read through its texel view.
     uint64_t storageBufferLimit = 0;
+    // prism-bench --profile: 0 the ordinary tracer; 1 the tracer with in-shader clocks per
+    // phase (shaders/profile.glsl; needs a context with shaderClock); 2 also around the
+    // primitive loops inside the walks.
+    uint32_t profile = 0;
     // For the studies only (prism-bench variants, docs/studies): the original's fixed offset of
     // secondary-ray origins along the normal, in scene units (0: Prism's relative offset), and
     // the common Moller-Trumbore triangle test instead of the watertight one.
@@ -43,6 +47,7 @@ struct TracerFeatures {
     uint32_t maxDepth = 5;
     bool texelBuffers = false;   // arrays with texel views read through them
     bool adaptiveGrid = false;   // the grid is adaptive (accel/grid.h)
+    uint32_t profile = 0;        // TracerOptions::profile
     float fixedRayOffset = 0.0f; // TracerOptions::fixedRayOffset
     bool mollerTrumbore = false; // TracerOptions::mollerTrumbore
 

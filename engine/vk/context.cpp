@@ -27,6 +27,17 @@ bool hasLayer(const char *name) {
     return false;
 }
 
+bool hasDeviceExtension(VkPhysicalDevice device, const char *name) {
+    uint32_t count = 0;
+    vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
+    std::vector<VkExtensionProperties> extensions(count);
+    vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
+    for (const auto &extension : extensions)
+        if (std::strcmp(extension.extensionName, name) == 0)
+            return true;
+    return false;
+}
+
 int deviceTypeRank(VkPhysicalDeviceType type) {
     switch (type) {
     case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
@@ -193,8 +204,11 @@ void Context::createDevice(const ContextOptions &options) {
     if (!found)
         throw Error(deviceName() + " has no queue family with both graphics and compute");
 
+    VkPhysicalDeviceShaderClockFeaturesKHR supportedClock{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_CLOCK_FEATURES_KHR};
     VkPhysicalDeviceVulkan12Features supported12{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    supported12.pNext = &supportedClock;
     VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     supported.pNext = &supported12;
     vkGetPhysicalDeviceFeatures2(physicalDevice_, &supported);
@@ -212,6 +226,19 @@ void Context::createDevice(const ContextOptions &options) {
     enabled.pNext = &enabled12;
     enabled.features.shaderInt64 = VK_TRUE;
     enabled.features.shaderFloat64 = VK_TRUE;
+    std::vector<const char *> extensions = options.deviceExtensions;
+    VkPhysicalDeviceShaderClockFeaturesKHR enabledClock{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_CLOCK_FEATURES_KHR};
+    if (options.shaderClock) {
+        if (!hasDeviceExtension(physicalDevice_, VK_KHR_SHADER_CLOCK_EXTENSION_NAME) ||
+            !supportedClock.shaderSubgroupClock)
+            throw Error(deviceName() + " lacks VK_KHR_shader_clock (subgroup clock), which "
+                                       "profiling needs");
+        enabledClock.shaderSubgroupClock = VK_TRUE;
+        enabled12.pNext = &enabledClock;
+        extensions.push_back(VK_KHR_SHADER_CLOCK_EXTENSION_NAME);
+        shaderClock_ = true;
+    }
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -223,8 +250,8 @@ void Context::createDevice(const ContextOptions &options) {
     info.pNext = &enabled;
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queueInfo;
-    info.enabledExtensionCount = static_cast<uint32_t>(options.deviceExtensions.size());
-    info.ppEnabledExtensionNames = options.deviceExtensions.data();
+    info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
     VK_CHECK(vkCreateDevice(physicalDevice_, &info, nullptr, &device_));
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
 }

@@ -14,6 +14,9 @@ struct ContextOptions {
     std::vector<const char *> instanceExtensions; // e.g. what GLFW needs for a surface
     std::vector<const char *> deviceExtensions;   // e.g. VK_KHR_swapchain
     std::string deviceNameFilter; // choose the first device whose name contains this
+    // VK_KHR_shader_clock's subgroup clock, which the profiling tracer reads (prism-bench
+    // --profile); a device without it is refused by name.
+    bool shaderClock = false;
 };
 
 class Context {
@@ -37,6 +40,7 @@ public:
     // Validation messages seen so far (warnings and errors); tests require zero.
     uint32_t validationMessageCount() const { return validationMessages_.load(); }
     bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
+    bool shaderClockEnabled() const { return shaderClock_; }
 
 private:
     void destroy();
@@ -56,6 +60,7 @@ private:
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;
     uint32_t queueFamily_ = 0;
+    bool shaderClock_ = false;
     std::atomic<uint32_t> validationMessages_{0};
 };
 

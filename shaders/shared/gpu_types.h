@@ -6,6 +6,7 @@
 #define PRISM_GPU_TYPES_H
 #include "glsl_compat.h"
 #include "primitive_kinds.h"
+#include "profile_phases.h"
 
 PRISM_NAMESPACE_BEGIN
 
@@ -168,7 +169,8 @@ struct GpuStats {
     uint64_t primaryRays;
     uint64_t shadowRays;
     uint64_t secondaryRays;
-    uint64_t loopCutPixels; // pixels lavapipe's loop limit cut short (loop_limit.glsl)
+    uint64_t loopCutPixels;          // pixels lavapipe's loop limit cut short (loop_limit.glsl)
+    uint64_t phaseNs[kProfileSlots]; // with PRISM_PROFILE: time per phase (profile_phases.h)
 };
 
 // Per-frame parameters (push constants, 128 bytes at most).
@@ -218,7 +220,8 @@ static_assert(sizeof(GpuMaterial) == 48);
 static_assert(offsetof(GpuMaterial, optics) == 32);
 static_assert(sizeof(GpuLight) == 32);
 static_assert(sizeof(GpuTexture) == 16);
-static_assert(sizeof(GpuStats) == 32);
+static_assert(sizeof(GpuStats) == 112);
+static_assert(offsetof(GpuStats, phaseNs) == 32);
 static_assert(offsetof(GpuStats, loopCutPixels) == 24);
 static_assert(sizeof(GpuFrameParams) == 96);
 static_assert(offsetof(GpuFrameParams, image) == 64);

@@ -57,6 +57,8 @@ PRISM_CONST(uint, kSpecFixedRayOffset, 12u);    // float: 0 = relative offset; >
 PRISM_CONST(uint, kSpecTriangleTest, 13u);      // one of the kTriangleTest values below
 PRISM_CONST(uint, kTriangleTestWatertight, 0u); // Woop, Benthin & Wald 2013 (Prism's)
 PRISM_CONST(uint, kTriangleTestMollerTrumbore, 1u); // Moller & Trumbore 1997
+// Only in the profiling build (PRISM_PROFILE): also time the primitive loops (profile.glsl).
+PRISM_CONST(uint, kSpecProfileWalkDetail, 20u);
 
 PRISM_NAMESPACE_END
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -151,3 +152,37 @@ TEST_F(PrismBenchCli, UnknownBaselineIsRefused) {
 }
 
 } // namespace
+
+// --profile: every phase the scene has takes time, the phases it lacks take none, and the
+// in-shader clocks cannot account for more than the frame's time on every core (their total
+// over the frame's time is the number of cores busy; how many were is up to a shared machine).
+TEST_F(PrismBenchCli, ProfileTimesThePhasesTheSceneHas) {
+    fs::path mirror = write("mirror.scene", "light 2 2 5\nmaterial m reflect 0.5\n"
+                                            "sphere 0 0 0 1 m\nplane 0 -1 0 0 1 0\n");
+    fs::path json = dir() / "out.json";
+    CliResult r = bench(scene_.string() + " " + mirror.string() +
+                        " --size 32x24 --depth 2 --runs 2 --profile --json " + json.string());
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.stdoutOnly.find("Where the time goes"), std::string::npos) << r.stdoutOnly;
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream(json));
+    ASSERT_EQ(doc["results"].size(), 2u);
+    for (int s = 0; s < 2; ++s) {
+        const auto &phases = doc["results"][s]["profile"]["phases"];
+        const auto &ns = phases["ns_per_sample"];
+        SCOPED_TRACE(doc["results"][s]["scene"].get<std::string>());
+        for (const char *phase : {"camera", "primary_walk", "shadow_walks", "shading", "output"})
+            EXPECT_GT(ns[phase].get<double>(), 0.0) << phase;
+        EXPECT_EQ(ns["primitive_tests"].get<double>(), 0.0); // level 1 has no clocks in walks
+        double cores = ns["total"].get<double>() / phases["frame_ns_per_sample"].get<double>();
+        EXPECT_GT(cores, 0.0);
+        EXPECT_LE(cores, double(std::thread::hardware_concurrency()) * 1.1);
+        const auto &detail = doc["results"][s]["profile"]["walk_detail"]["ns_per_sample"];
+        EXPECT_GT(detail["primitive_tests"].get<double>(), 0.0);
+        EXPECT_LT(detail["primitive_tests"].get<double>(),
+                  detail["primary_walk"].get<double>() + detail["shadow_walks"].get<double>() +
+                      detail["secondary_walks"].get<double>());
+    }
+    // Only the mirror sends rays on: tiny.scene has no reflective material.
+    EXPECT_EQ(doc["results"][0]["profile"]["phases"]["ns_per_sample"]["secondary_walks"], 0.0);
+    EXPECT_GT(doc["results"][1]["profile"]["phases"]["ns_per_sample"]["secondary_walks"], 0.0);
+}

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "bench_profile.h"
 #include "core/error.h"
 #include "core/median.h"
 #include "core/timer.h"
@@ -55,6 +56,7 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
         std::string name = std::filesystem::path(path).stem().string();
         std::vector<BenchResult> results;
         std::vector<std::unique_ptr<RayTracer>> tracers;
+        std::vector<Grid> grids;
         for (const BenchVariant &variant : variants) {
             progress(name + " " + variant.name + ": build + warm-up");
             BenchResult r;
@@ -85,6 +87,8 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
                               (name + "_" + variant.name + ".exr"));
             results.push_back(r);
             tracers.push_back(std::move(tracer));
+            if (settings.profile)
+                grids.push_back(std::move(grid));
         }
         std::unique_ptr<EmbreeBaseline> embree;
         if (settings.embreeBaseline) {
@@ -111,6 +115,10 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
                          std::to_string(settings.runs));
                 results.back().frameMs.push_back(embree->traceFrame().ms);
             }
+        }
+        for (size_t v = 0; v < variants.size() && settings.profile; ++v) {
+            progress(name + " " + variants[v].name + ": profile");
+            results[v].profile = profileVariant(context, scene, grids[v], variants[v], settings);
         }
         all.insert(all.end(), results.begin(), results.end());
     }

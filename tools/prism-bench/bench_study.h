@@ -3,12 +3,14 @@
 // in turn, so slow drift of a shared machine affects all variants alike and their ratios hold.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "accel/walk_counts.h"
 #include "bench_variant.h"
 #include "core/ray_counts.h"
+#include "phase_profile.h"
 #include "vk/context.h"
 
 namespace prism {
@@ -21,6 +23,9 @@ struct BenchSettings {
     // Also trace each scene's camera and shadow rays with Intel Embree on all cores (the
     // baseline of issue 11), interleaved with the variants' frames: a row named "embree".
     bool embreeBaseline = false;
+    // Also run each variant's profiling tracer (in-shader clocks per phase; the context needs
+    // the shader clock) after its timed frames: BenchResult::profile.
+    bool profile = false;
     // For the studies (docs/studies): keep the scene's file origin instead of moving it to the
     // camera (scene/scene_origin.h), to show what that centring protects against; and, when not
     // empty, write each variant's warm-up frame to imageDir/SCENE_VARIANT.exr.
@@ -38,6 +43,7 @@ struct BenchResult {
     double buildMs = 0.0;
     std::vector<double> frameMs; // GPU time of each timed frame (Embree: wall time)
     RayCounts rays;              // of one frame
+    std::optional<BenchProfile> profile;
     double medianMs() const;
     double mraysPerSecond() const; // at the median
 };

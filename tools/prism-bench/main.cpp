@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "bench_profile.h"
 #include "bench_study.h"
 #include "core/error.h"
 #include "embree_baseline.h"
@@ -65,23 +66,45 @@ void printTable(const std::vector<BenchResult> &results, const BenchSettings &s,
     }
 }
 
+nlohmann::json toJson(const PhaseProfile &p) {
+    const auto &ns = p.nsPerSample;
+    return {{"ns_per_sample",
+             {{"camera", ns[gpu::kPhaseCamera]},
+              {"primary_walk", ns[gpu::kPhasePrimaryWalk]},
+              {"secondary_walks", ns[gpu::kPhaseSecondaryWalk]},
+              {"shadow_walks", ns[gpu::kPhaseShadowWalk]},
+              {"shading", ns[gpu::kPhaseShading]},
+              {"stack", ns[gpu::kPhaseStack]},
+              {"output", ns[gpu::kPhaseOutput]},
+              {"primitive_tests", ns[gpu::kPhasePrimitiveTests]},
+              {"clock_reads", ns[gpu::kPhaseClockReads]},
+              {"other", p.nsOutsidePhases()},
+              {"total", ns[gpu::kPhaseTotal]}}},
+            {"frame_ms", p.frameMs},
+            {"frame_ns_per_sample", p.nsPerFrameSample}};
+}
+
 nlohmann::json toJson(const BenchResult &r) {
-    return {{"scene", r.scene},
-            {"variant", r.variant},
-            {"primitives", r.primitives},
-            {"grid", r.grid},
-            {"max_per_cell", r.maxPerCell},
-            {"grid_bytes", r.gridBytes},
-            {"cells_per_primary_ray", r.walk.cellsPerRay},
-            {"tests_per_primary_ray", r.walk.testsPerRay},
-            {"build_ms", r.buildMs},
-            {"frame_ms", r.frameMs},
-            {"trace_ms_median", r.medianMs()},
-            {"mrays_per_s", r.mraysPerSecond()},
-            {"rays",
-             {{"primary", r.rays.primary},
-              {"shadow", r.rays.shadow},
-              {"secondary", r.rays.secondary}}}};
+    nlohmann::json profile;
+    if (r.profile)
+        profile = {{"phases", toJson(r.profile->phases)},
+                   {"walk_detail", toJson(r.profile->detail)}};
+    return {
+        {"scene", r.scene},
+        {"variant", r.variant},
+        {"primitives", r.primitives},
+        {"grid", r.grid},
+        {"max_per_cell", r.maxPerCell},
+        {"grid_bytes", r.gridBytes},
+        {"cells_per_primary_ray", r.walk.cellsPerRay},
+        {"tests_per_primary_ray", r.walk.testsPerRay},
+        {"build_ms", r.buildMs},
+        {"frame_ms", r.frameMs},
+        {"trace_ms_median", r.medianMs()},
+        {"mrays_per_s", r.mraysPerSecond()},
+        {"rays",
+         {{"primary", r.rays.primary}, {"shadow", r.rays.shadow}, {"secondary", r.rays.secondary}}},
+        {"profile", profile}};
 }
 
 } // namespace
@@ -126,6 +149,9 @@ int main(int argc, char **argv) {
                    "with Intel Embree on all cores (CPU), interleaved with the variants; Prism's "
                    "Mrays/s is then given as a ratio to it (use --depth 1 for the same rays)")
         ->check(CLI::IsMember({"embree"}));
+    app.add_flag("--profile", settings.profile,
+                 "Also run each variant with in-shader clocks (VK_KHR_shader_clock) and print "
+                 "where its time goes: camera, walks, shading, per pixel sample");
     app.add_option("--json", jsonPath, "Also write every result (all frame times) as JSON");
     app.add_option("--device", deviceFilter, "First Vulkan device whose name contains this");
     CLI11_PARSE(app, argc, argv);
@@ -148,6 +174,7 @@ int main(int argc, char **argv) {
             throw Error("--variants: no variant given");
         vk::ContextOptions contextOptions;
         contextOptions.deviceNameFilter = deviceFilter;
+        contextOptions.shaderClock = settings.profile;
         vk::Context context(contextOptions);
         std::vector<BenchResult> results =
             runStudy(context, scenes, variants, settings, [](const std::string &what) {
@@ -156,6 +183,8 @@ int main(int argc, char **argv) {
             });
         std::fprintf(stderr, "\n");
         printTable(results, settings, context.deviceName());
+        if (settings.profile)
+            printProfileTable(results);
         if (!jsonPath.empty()) {
             nlohmann::json all = nlohmann::json::array();
             for (const BenchResult &r : results)
