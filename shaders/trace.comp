@@ -56,6 +56,9 @@ vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color,
     vec3 result = materialAmbient(m) * color * header.ambient.rgb;
     uint lights = headerLightCount(header);
     for (uint l = 0u; l < lights; ++l) {
+        // resume.glsl: the light's loop pass, and the strata loops of an area light's sample
+        // (sampling.h: from sqrt's estimate, each runs at most twice, three times a sample)
+        chargeBudget(HAS_AREA_LIGHTS ? 32u : 8u);
         uint shadowWalkNs = 0u;
         GpuLight light = lightAt(l);
         vec3 toLight = normalize(lightPosition(light) - s.position);
@@ -127,6 +130,7 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
     vec3 radiance = vec3(0.0);
     pushRay(origin, dir, vec3(1.0), 1u);
     while (gStackSize > 0u) {
+        chargeBudget(8u); // resume.glsl
         uint64_t popStart = profileClock();
         PendingRay ray = gStack[--gStackSize];
         profileAdd(kPhaseStack, popStart);
@@ -183,6 +187,14 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
     return radiance;
 }
 
+void addResumeCounts(bool unfinished, bool stuck) {
+    uvec2 total = subgroupAdd(uvec2(unfinished ? 1u : 0u, stuck ? 1u : 0u));
+    if (subgroupElect()) {
+        if (total.x != 0u) atomicAdd(stats.unfinishedPixels, uint64_t(total.x));
+        if (total.y != 0u) atomicAdd(stats.stuckPixels, uint64_t(total.y));
+    }
+}
+
 // One atomic per subgroup and counter: the lanes' counts are summed first.
 void addCounts(uint primary, uint shadow, uint secondary, uint loopCut) {
     uvec4 total = subgroupAdd(uvec4(primary, shadow, secondary, loopCut));
@@ -197,8 +209,14 @@ void addCounts(uint primary, uint shadow, uint secondary, uint loopCut) {
 void main() {
     profileStart();
     uint64_t invocationStart = profileClock();
-    uvec2 pixel = gl_GlobalInvocationID.xy;
+    uvec2 pixel = uvec2(frameTileOriginX(frame), frameTileOriginY(frame)) + gl_GlobalInvocationID.xy;
     bool inside = all(lessThan(pixel, frame.image.xy));
+    if (RESUMABLE) { // resume.glsl: a finished pixel waits for its tile's last dispatch
+        gRecord = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * 8u) + gl_GlobalInvocationID.x;
+        gResume = resumeRecords[gRecord];
+        inside = inside && gResume.progress.y == 0u;
+        chargeBudget(32u); // the strata loops of the sample's position (sampling.h)
+    }
     uint pixelIndex = pixel.y * frame.image.x + pixel.x;
     uint sampleIndex = frameSampleIndex(frame);
     vec3 radiance = vec3(0.0);
@@ -221,6 +239,25 @@ void main() {
     uint64_t outputStart = profileClock();
     // Last, after every other loop of the invocation (loop_limit.glsl).
     bool cut = loopLimitReached();
+    // Resumable: a sample stopped by its budget (or, never expected, by lavapipe's limit) keeps
+    // nothing of this dispatch but where it got to; a finished one is written and marked done.
+    bool unfinished = RESUMABLE && inside && (cut || gOutOfBudget || gLogFull);
+    bool stuck = false;
+    if (unfinished) {
+        // Never expected: a cut despite the budget, a full log, or no step forward.
+        stuck = cut || gLogFull ||
+                (gOutOfBudget && gInterrupted.progress == gResume.progress &&
+                 gInterrupted.walker == gResume.walker && gInterrupted.walkerT == gResume.walkerT);
+        if (!stuck)
+            resumeRecords[gRecord] = gInterrupted;
+        inside = false;
+        gShadowRays = 0u;
+        gSecondaryRays = 0u;
+    } else if (RESUMABLE && inside) {
+        resumeRecords[gRecord].progress.y = 1u;
+    }
+    if (RESUMABLE)
+        addResumeCounts(unfinished && !stuck, stuck);
     if (inside) {
         if (cut)
             radiance = vec3(1.0, 0.0, 1.0); // magenta: the host refuses to save such an image

@@ -25,10 +25,15 @@ layout(constant_id = kSpecAdaptiveGrid) const bool ADAPTIVE_GRID = false;
 layout(constant_id = kSpecFixedRayOffset) const float FIXED_RAY_OFFSET = 0.0;
 layout(constant_id = kSpecTriangleTest) const uint TRIANGLE_TEST = kTriangleTestWatertight;
 const bool MOLLER_TRUMBORE = TRIANGLE_TEST == kTriangleTestMollerTrumbore;
+layout(constant_id = kSpecResumable) const bool RESUMABLE = false;
 
 layout(set = 0, binding = kBindingAccumImage, rgba32f) uniform image2D accumImage;
 layout(set = 0, binding = kBindingAovImage, rgba32f) uniform writeonly image2D aovImage;
 layout(std430, set = 0, binding = kBindingStats) buffer StatsBuffer { GpuStats stats; };
+layout(std430, set = 0, binding = kBindingResumeRecords) buffer ResumeRecordBuffer {
+    GpuResumeRecord resumeRecords[];
+};
+layout(std430, set = 0, binding = kBindingWalkLog) buffer WalkLogBuffer { uvec4 walkLog[]; };
 layout(std430, set = 0, binding = kBindingHeader) readonly buffer HeaderBuffer {
     GpuSceneHeader header;
 };

@@ -9,6 +9,8 @@ struct Hit {
     vec2 b12;   // triangle barycentrics of p1 and p2
 };
 
+#include "resume.glsl"
+
 // Tests the primitive with grid id `id` and records it in `hit` when closer than hit.t.
 void testPrimitive(uint id, vec3 origin, vec3 dir, WatertightRay wray, inout Hit hit) {
     float t;
@@ -148,14 +150,18 @@ bool stepBoxWalk(inout BoxWalk w, vec3 origin, vec3 dir) {
 
 // One walk for both kinds of query (trace_ray.glsl), planes first, then the grid.
 #define TRACE_RAY_NAME traceClosest
+#define TRACE_WALK_NAME walkClosest
 #define TRACE_RAY_ANY_HIT 0
 #include "trace_ray.glsl"
 #undef TRACE_RAY_NAME
+#undef TRACE_WALK_NAME
 #undef TRACE_RAY_ANY_HIT
 #define TRACE_RAY_NAME traceAnyHit
+#define TRACE_WALK_NAME walkAnyHit
 #define TRACE_RAY_ANY_HIT 1
 #include "trace_ray.glsl"
 #undef TRACE_RAY_NAME
+#undef TRACE_WALK_NAME
 #undef TRACE_RAY_ANY_HIT
 
 // True when anything lies on the open segment 0 < t < tMax.

@@ -36,11 +36,17 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT, // snapshots for the viewer
              true),
-      timestamps_(context) {
-    createImages(width, height);
-    vk::ComputePipelineDesc desc;
+      lightCount_(uint32_t(scene.lights.size())), resumeMemoryBytes_(options.resumeMemoryBytes),
+      resumeRecords_(context, 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false),
+      walkLog_(context, 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false), timestamps_(context) {
     if (features_.profile > 0 && !context.shaderClockEnabled())
         throw Error("profiling needs a Vulkan context created with the shader clock");
+    createImages(width, height);
+    createPipeline();
+}
+
+void RayTracer::createPipeline() {
+    vk::ComputePipelineDesc desc;
     desc.spirv =
         features_.profile > 0
             ? std::span<const uint32_t>(kTraceProfileCompSpv, sizeof(kTraceProfileCompSpv) / 4)
@@ -48,10 +54,12 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     desc.bindings = traceDescriptorTypes();
     desc.specialization = features_.specialization();
     desc.pushConstantBytes = sizeof(gpu::GpuFrameParams);
-    pipeline_ = std::make_unique<vk::ComputePipeline>(context, desc);
+    pipeline_ = std::make_unique<vk::ComputePipeline>(context_, desc);
     bindImages();
     bindScene(*pipeline_, scene_, limits_);
     pipeline_->bindBuffer(gpu::kBindingStats, stats_.handle());
+    pipeline_->bindBuffer(gpu::kBindingResumeRecords, resumeRecords_.handle());
+    pipeline_->bindBuffer(gpu::kBindingWalkLog, walkLog_.handle());
 }
 
 void RayTracer::bindImages() {
@@ -63,6 +71,8 @@ void RayTracer::resize(uint32_t width, uint32_t height) {
     vkDeviceWaitIdle(context_.device()); // no submission may still use the old images
     createImages(width, height);
     bindImages();
+    if (resumePlan_.tileWidth != 0) // tiles and logs are planned for the image size
+        startResuming();
 }
 
 void RayTracer::recordResetCounters(VkCommandBuffer commands) {
@@ -163,6 +173,8 @@ void RayTracer::compile(const Camera &camera) {
 
 FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixel,
                                    const std::function<void(double)> &progress) {
+    if (features_.resumable)
+        return renderResumable(camera, samplesPerPixel, progress);
     FrameResult result;
     uint32_t chunks = progress ? std::min(samplesPerPixel, 20u) : 1u;
     uint32_t done = 0;
@@ -192,6 +204,13 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
     result.rays = counted.rays;
     result.loopCutPixels = counted.loopCutPixels;
     result.phaseNs = counted.phaseNs;
+    if (result.loopCutPixels > 0) {
+        startResuming();
+        FrameResult resumed = renderResumable(camera, samplesPerPixel, progress);
+        resumed.gpuMs += result.gpuMs; // the frame's time includes the pass that was cut
+        resumed.loopCutPixels = 0;
+        return resumed;
+    }
     return result;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/ray_counts.h"
+#include "render/resume_plan.h"
 #include "render/scene_buffers.h"
 #include "render/tracer_features.h"
 #include "shared/profile_phases.h"
@@ -23,7 +24,10 @@ namespace prism {
 struct FrameResult {
     double gpuMs = 0.0; // from GPU timestamps, all sample dispatches of the frame
     RayCounts rays;
+    // Pixels lavapipe's loop limit cut short (loop_limit.glsl). renderFrame never returns
+    // such a frame: it traces it again resumably (resumeDispatches > 0).
     uint64_t loopCutPixels = 0;
+    uint32_t resumeDispatches = 0; // dispatches of resumable tracing (shaders/resume.glsl)
     // With TracerOptions::profile: nanoseconds per phase (shared/profile_phases.h), summed over
     // the frame's subgroups; zero otherwise.
     std::array<uint64_t, gpu::kProfileSlots> phaseNs{};
@@ -56,6 +60,9 @@ public:
 
     // A whole frame: all samples, submitted and waited for, with GPU time and ray counts.
     // With `progress`, samples go in several submissions and progress gets the fraction done.
+    // A frame whose pixels overran lavapipe's loop limit is traced again resumably, and from
+    // then on every frame of this tracer is. Throws prism::Error when a sample cannot be
+    // finished even so (more walks than a pixel's log holds).
     FrameResult renderFrame(const Camera &camera, uint32_t samplesPerPixel,
                             const std::function<void(double)> &progress = {});
 
@@ -85,6 +92,12 @@ private:
                         uint32_t groupsX, uint32_t groupsY);
     void createImages(uint32_t width, uint32_t height);
     void bindImages();
+    // The pipeline for features_, with every binding written.
+    void createPipeline();
+    // Resumable tracing: each sample of each tile dispatched until all its pixels are done.
+    void startResuming();
+    FrameResult renderResumable(const Camera &camera, uint32_t samplesPerPixel,
+                                const std::function<void(double)> &progress);
 
     vk::Context &context_;
     uint32_t width_ = 0, height_ = 0;
@@ -93,6 +106,11 @@ private:
     vk::CommandRunner runner_;
     SceneBuffers scene_;
     vk::Buffer stats_;
+    uint32_t lightCount_ = 0;
+    uint64_t resumeMemoryBytes_ = 0;
+    ResumePlan resumePlan_;
+    vk::Buffer resumeRecords_; // resumable tracing; 32-byte stand-ins otherwise
+    vk::Buffer walkLog_;
     vk::Image accum_;
     vk::Image aov_;
     vk::TimestampQueries timestamps_;

@@ -43,6 +43,8 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     if (options.profile > 2)
         throw Error("profile level " + std::to_string(options.profile) + " is outside 0..2");
     f.profile = options.profile;
+    f.resumable = options.resumable;
+    f.resumeLaneBudget = options.resumeLaneBudget;
     f.shadows = options.shadows;
     f.reflection = f.reflection && options.reflection;
     f.transmission = f.transmission && options.transmission;
@@ -69,6 +71,9 @@ std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
             {gpu::kSpecTexelBuffers, texelBuffers},
             {gpu::kSpecAdaptiveGrid, adaptiveGrid},
             {gpu::kSpecProfileWalkDetail, profile >= 2},
+            {gpu::kSpecResumable, resumable},
+            {gpu::kSpecResumeLaneBudget,
+             resumeLaneBudget == 0 ? gpu::kResumeLaneBudget : resumeLaneBudget},
             {gpu::kSpecFixedRayOffset, std::bit_cast<uint32_t>(fixedRayOffset)},
             {gpu::kSpecTriangleTest,
              mollerTrumbore ? gpu::kTriangleTestMollerTrumbore : gpu::kTriangleTestWatertight}};

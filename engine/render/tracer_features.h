@@ -27,6 +27,13 @@ struct TracerOptions {
     // phase (shaders/profile.glsl; needs a context with shaderClock); 2 also around the
     // primitive loops inside the walks.
     uint32_t profile = 0;
+    // Resumable tracing (shaders/resume.glsl) from the first frame rather than only after a
+    // frame overran lavapipe's loop limit; with a lane budget (loop iterations per dispatch,
+    // 0: the shader's default) and a memory budget for its records and logs. Tests use small
+    // budgets to interrupt ordinary scenes everywhere.
+    bool resumable = false;
+    uint32_t resumeLaneBudget = 0;
+    uint64_t resumeMemoryBytes = uint64_t(64) << 20;
     // For the studies only (prism-bench variants, docs/studies): the original's fixed offset of
     // secondary-ray origins along the normal, in scene units (0: Prism's relative offset), and
     // the common Moller-Trumbore triangle test instead of the watertight one.
@@ -45,11 +52,13 @@ struct TracerFeatures {
     bool shadows = true;
     bool writeAov = false;
     uint32_t maxDepth = 5;
-    bool texelBuffers = false;   // arrays with texel views read through them
-    bool adaptiveGrid = false;   // the grid is adaptive (accel/grid.h)
-    uint32_t profile = 0;        // TracerOptions::profile
-    float fixedRayOffset = 0.0f; // TracerOptions::fixedRayOffset
-    bool mollerTrumbore = false; // TracerOptions::mollerTrumbore
+    bool texelBuffers = false;     // arrays with texel views read through them
+    bool adaptiveGrid = false;     // the grid is adaptive (accel/grid.h)
+    uint32_t profile = 0;          // TracerOptions::profile
+    bool resumable = false;        // loop budget and resumption (shaders/resume.glsl)
+    uint32_t resumeLaneBudget = 0; // TracerOptions::resumeLaneBudget
+    float fixedRayOffset = 0.0f;   // TracerOptions::fixedRayOffset
+    bool mollerTrumbore = false;   // TracerOptions::mollerTrumbore
 
     bool has(uint32_t kind) const { return (kinds >> kind) & 1u; }
     std::vector<vk::SpecializationConstant> specialization() const;

@@ -169,7 +169,12 @@ struct GpuStats {
     uint64_t primaryRays;
     uint64_t shadowRays;
     uint64_t secondaryRays;
-    uint64_t loopCutPixels;          // pixels lavapipe's loop limit cut short (loop_limit.glsl)
+    uint64_t loopCutPixels; // pixels lavapipe's loop limit cut short (loop_limit.glsl)
+    // Resumable tracing (resume.glsl): pixels whose sample is not finished after this
+    // dispatch, and pixels that cannot finish (more walks than their log holds, or a budget
+    // spent before the replay reaches the walk in progress).
+    uint64_t unfinishedPixels;
+    uint64_t stuckPixels;
     uint64_t phaseNs[kProfileSlots]; // with PRISM_PROFILE: time per phase (profile_phases.h)
 };
 
@@ -180,7 +185,7 @@ struct GpuFrameParams {
     vec4 du;       // right scaled by h*a (perspective) or (H/2)*a (ortho)
     vec4 dv;       // true up scaled by h (perspective) or H/2 (ortho)
     uvec4 image;   // x width, y height, z this dispatch's sample index, w samples per pixel
-    uvec4 control; // x: max depth, y: kLoopProbeRuns
+    uvec4 control; // x: max depth, y: kLoopProbeRuns, z: tile origin x | y << 16, w: walk log size
 };
 PRISM_INLINE bool isParallelCamera(PRISM_IN(GpuFrameParams) f) {
     return f.eye.w != 0.0f;
@@ -199,6 +204,28 @@ PRISM_CONST(uint, kLoopProbeRuns, 2u);
 PRISM_INLINE uint frameLoopProbe(PRISM_IN(GpuFrameParams) f) {
     return f.control.y;
 }
+// The first pixel of the tile a dispatch traces (0, 0 but in resumable tracing).
+PRISM_INLINE uint frameTileOriginX(PRISM_IN(GpuFrameParams) f) {
+    return f.control.z & 0xFFFFu;
+}
+PRISM_INLINE uint frameTileOriginY(PRISM_IN(GpuFrameParams) f) {
+    return f.control.z >> 16u;
+}
+// Resumable tracing: walk results each pixel's log holds (resume.glsl).
+PRISM_INLINE uint frameWalkLogSize(PRISM_IN(GpuFrameParams) f) {
+    return f.control.w;
+}
+
+// Resumable tracing (shaders/resume.glsl): where a pixel's sample stands between dispatches.
+struct GpuResumeRecord {
+    // x: walks whose results are in the log (the next walk is the one in progress), y: 1 once
+    // the sample is finished, z: tests the walk in progress has done in its cell, w: 1 when
+    // there is a walk in progress.
+    uvec4 progress;
+    uvec4 bestHit; // the walk in progress's closest hit so far, packed as in the log
+    uvec4 walker;  // xyz: its cell (regular grid) or voxel (adaptive) on entering the cell
+    uvec4 walkerT; // float bits: xyz tNext (regular) or x the walk's t there (adaptive)
+};
 
 PRISM_NAMESPACE_END
 
@@ -220,8 +247,10 @@ static_assert(sizeof(GpuMaterial) == 48);
 static_assert(offsetof(GpuMaterial, optics) == 32);
 static_assert(sizeof(GpuLight) == 32);
 static_assert(sizeof(GpuTexture) == 16);
-static_assert(sizeof(GpuStats) == 112);
-static_assert(offsetof(GpuStats, phaseNs) == 32);
+static_assert(sizeof(GpuStats) == 128);
+static_assert(offsetof(GpuStats, unfinishedPixels) == 32);
+static_assert(offsetof(GpuStats, phaseNs) == 48);
+static_assert(sizeof(GpuResumeRecord) == 64);
 static_assert(offsetof(GpuStats, loopCutPixels) == 24);
 static_assert(sizeof(GpuFrameParams) == 96);
 static_assert(offsetof(GpuFrameParams, image) == 64);

@@ -36,7 +36,10 @@ PRISM_CONST(uint, kBindingGridEntries, 20u);           // adaptive grid: the vox
 PRISM_CONST(uint, kBindingCellBoxes, 21u);             // adaptive grid: each cell's box in voxels
 PRISM_CONST(uint, kBindingGridEntryTexels, 22u);       // r32ui
 PRISM_CONST(uint, kBindingCellBoxTexels, 23u);         // rgba32ui
-PRISM_CONST(uint, kTraceBindingCount, 24u);
+// Resumable tracing (resume.glsl): a GpuResumeRecord and a walk log per pixel of the tile.
+PRISM_CONST(uint, kBindingResumeRecords, 24u);
+PRISM_CONST(uint, kBindingWalkLog, 25u); // uvec4 per walk result, frameWalkLogSize per pixel
+PRISM_CONST(uint, kTraceBindingCount, 26u);
 
 // Specialization constants: features a scene does not use are compiled out.
 PRISM_CONST(uint, kSpecKinds, 0u); // bit k: the scene has primitives of kind k
@@ -59,6 +62,15 @@ PRISM_CONST(uint, kTriangleTestWatertight, 0u); // Woop, Benthin & Wald 2013 (Pr
 PRISM_CONST(uint, kTriangleTestMollerTrumbore, 1u); // Moller & Trumbore 1997
 // Only in the profiling build (PRISM_PROFILE): also time the primitive loops (profile.glsl).
 PRISM_CONST(uint, kSpecProfileWalkDetail, 20u);
+// Trace with a loop budget and resume where it ran out in the next dispatch (resume.glsl).
+PRISM_CONST(uint, kSpecResumable, 21u);
+PRISM_CONST(uint, kSpecResumeLaneBudget, 22u); // loop iterations a lane may charge per dispatch
+// A subgroup's 8 lanes step through loops together, so its count is at most the sum of theirs.
+// Each loop a subgroup enters runs once more than its lanes count (NIR's loops test at the top,
+// gallivm's at the bottom, even with no lane active): resume.glsl charges every cell, walk,
+// bounce and light an extra 8 for the loops inside it. 8 x 7,900 leaves 2,300 of lavapipe's
+// 65,535 for the few loops outside all of those.
+PRISM_CONST(uint, kResumeLaneBudget, 7900u);
 
 PRISM_NAMESPACE_END
 

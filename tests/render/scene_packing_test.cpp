@@ -120,8 +120,11 @@ TEST(TracerFeatures, FollowTheScene) {
     std::map<uint32_t, uint32_t> constants;
     for (vk::SpecializationConstant c : f.specialization())
         EXPECT_TRUE(constants.emplace(c.id, c.value).second) << "constant_id " << c.id << " twice";
-    EXPECT_EQ(constants.size(), 15u); // every constant_id of shared/trace_interface.h
+    EXPECT_EQ(constants.size(), 17u); // every constant_id of shared/trace_interface.h
     EXPECT_EQ(constants.at(gpu::kSpecAdaptiveGrid), 0u);
+    EXPECT_EQ(constants.at(gpu::kSpecResumable), 0u) << "resumable only after a cut";
+    EXPECT_EQ(constants.at(gpu::kSpecResumeLaneBudget), gpu::kResumeLaneBudget);
+    EXPECT_EQ(constants.at(gpu::kSpecProfileWalkDetail), 0u);
     EXPECT_EQ(constants.at(gpu::kSpecKinds), 0b111u) << "spheres, triangles and planes";
     EXPECT_EQ(constants.at(gpu::kSpecStackSize), 9u) << "stack holds 2 * depth - 1 rays";
     EXPECT_EQ(constants.at(gpu::kSpecTexelBuffers), 1u) << "texel-buffer reads";

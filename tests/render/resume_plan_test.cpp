@@ -1,0 +1,40 @@
+// planResume: tiles of whole workgroups that fit the memory budget, logs that hold every walk
+// a sample can make (up to kMaxWalkLog).
+#include <gtest/gtest.h>
+
+#include "render/resume_plan.h"
+
+namespace prism {
+namespace {
+
+TEST(ResumePlan, LogHoldsEveryWalkOfTheRayTree) {
+    // depth 3: 7 rays, each with a closest-hit walk and one shadow walk per light, + the AOV walk
+    EXPECT_EQ(planResume(64, 64, 3, 2, true).walkLogSize, 7u * 3u + 1u);
+    EXPECT_EQ(planResume(64, 64, 1, 1, false).walkLogSize, 2u);
+    EXPECT_EQ(planResume(64, 64, 30, 4, false).walkLogSize, kMaxWalkLog);
+}
+
+TEST(ResumePlan, SmallImagesAreOneTileOfWholeWorkgroups) {
+    ResumePlan plan = planResume(30, 17, 5, 1, false);
+    EXPECT_EQ(plan.tileWidth, 32u);
+    EXPECT_EQ(plan.tileHeight, 24u);
+}
+
+TEST(ResumePlan, TilesFitTheMemoryBudget) {
+    for (uint64_t budget : {uint64_t(1) << 20, uint64_t(8) << 20, uint64_t(64) << 20}) {
+        ResumePlan plan = planResume(4096, 3000, 8, 3, true, budget);
+        SCOPED_TRACE(budget);
+        EXPECT_LE(plan.recordBytes() + plan.logBytes(), budget);
+        EXPECT_EQ(plan.tileWidth % 8, 0u);
+        EXPECT_EQ(plan.tileHeight % 8, 0u);
+        EXPECT_GE(plan.tileWidth, 8u);
+        EXPECT_GE(plan.tileHeight, 8u);
+    }
+    // A budget too small for even one workgroup still gets one (8x8) tile.
+    ResumePlan tiny = planResume(100, 100, 8, 3, false, 1);
+    EXPECT_EQ(tiny.tileWidth, 8u);
+    EXPECT_EQ(tiny.tileHeight, 8u);
+}
+
+} // namespace
+} // namespace prism
