@@ -49,22 +49,28 @@ WatertightRay makeWatertightRay(vec3 dir) {
     return r;
 }
 
-// Watertight ray/triangle test: edge functions U, V, W are exact in sign, with a double-precision
-// retry when one is zero, so a ray through a shared edge or vertex hits one of the triangles.
+// a * b - c * d with the sign of the exact value (Kahan's difference of products: fma recovers
+// the rounding error of c * d exactly and adds it back; relative error at most 2 ulp,
+// Jeannerod, Louvet & Muller 2013). `precise` keeps the compiler from folding the recovery.
+float differenceOfProducts(float a, float b, float c, float d) {
+    precise float cd = c * d;
+    precise float error = fma(-c, d, cd);
+    precise float ab = fma(a, b, -cd);
+    precise float result = ab + error;
+    return result;
+}
+
+// Watertight ray/triangle test: edge functions U, V, W exact in sign, so a ray through a shared
+// edge or vertex hits one of the triangles (the CPU reference computes them in double).
 bool intersectTriangle(vec3 origin, WatertightRay r, vec3 p0, vec3 p1, vec3 p2, float tMax,
                        out float t, out vec2 b12) {
     vec3 a = p0 - origin, b = p1 - origin, c = p2 - origin;
     float ax = a[r.k.x] - r.shear.x * a[r.k.z], ay = a[r.k.y] - r.shear.y * a[r.k.z];
     float bx = b[r.k.x] - r.shear.x * b[r.k.z], by = b[r.k.y] - r.shear.y * b[r.k.z];
     float cx = c[r.k.x] - r.shear.x * c[r.k.z], cy = c[r.k.y] - r.shear.y * c[r.k.z];
-    float u = cx * by - cy * bx;
-    float v = ax * cy - ay * cx;
-    float w = bx * ay - by * ax;
-    if (u == 0.0 || v == 0.0 || w == 0.0) {
-        u = float(double(cx) * double(by) - double(cy) * double(bx));
-        v = float(double(ax) * double(cy) - double(ay) * double(cx));
-        w = float(double(bx) * double(ay) - double(by) * double(ax));
-    }
+    float u = differenceOfProducts(cx, by, cy, bx);
+    float v = differenceOfProducts(ax, cy, ay, cx);
+    float w = differenceOfProducts(bx, ay, by, ax);
     if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0))
         return false;
     float det = u + v + w;

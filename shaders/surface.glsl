@@ -12,6 +12,10 @@ struct Surface {
     // position, or on the front of a triangle with vertex normals the smooth surface's point.
     vec3 shadowPosition;
     bool smoothed; // vertex normals: shadow rays take the shading normal's horizon
+    // Directions of increasing u and v on the surface (any length), for the tangent frame of
+    // normal and bump maps (surface_maps.glsl); set only where HAS_SURFACE_MAPS.
+    vec3 dpdu;
+    vec3 dpdv;
 };
 
 // Hanika 2021 (surface_reference.h): p lifted onto each vertex's tangent plane where below it,
@@ -23,13 +27,25 @@ vec3 smoothSurfacePoint(vec3 p, vec3 p0, vec3 p1, vec3 p2, vec3 n0, vec3 n1, vec
 
 // Plane texture axes: a1 = normalize(n x e) with e the world axis least aligned with n
 // (x before y before z on ties), a2 = n x a1.
-vec2 planeUV(vec3 p, vec3 n) {
+vec3 planeAxisU(vec3 n) {
     vec3 a = abs(n);
     vec3 axis = (a.x <= a.y && a.x <= a.z) ? vec3(1, 0, 0)
                                            : (a.y <= a.z ? vec3(0, 1, 0) : vec3(0, 0, 1));
-    vec3 a1 = normalize(cross(n, axis));
-    vec3 a2 = cross(n, a1);
-    return vec2(dot(p, a1), dot(p, a2));
+    return normalize(cross(n, axis));
+}
+vec2 planeUV(vec3 p, vec3 n) {
+    vec3 a1 = planeAxisU(n);
+    return vec2(dot(p, a1), dot(p, cross(n, a1)));
+}
+
+// dp/du and dp/dv of a triangle from its corners' texture coordinates (Lengyel's tangent
+// formula), each times sign(det) rather than divided by det: only their directions are used,
+// and a triangle whose UVs have no area (det 0) gives zero vectors, so the tangent frame falls
+// back to its arbitrary one (surface_maps.glsl).
+void triangleTangents(vec3 e1, vec3 e2, vec2 d1, vec2 d2, out vec3 dpdu, out vec3 dpdv) {
+    float det = d1.x * d2.y - d1.y * d2.x;
+    dpdu = sign(det) * (d2.y * e1 - d1.y * e2);
+    dpdv = sign(det) * (d1.x * e2 - d2.x * e1);
 }
 
 // Hit points are rebuilt from the primitive (not origin + t * dir) so their error is relative
@@ -46,6 +62,10 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         s.shadowPosition = s.position;
         s.smoothed = false;
         s.uv = vec2(0.5 + atan(n.z, n.x) / (2.0 * kPi), 0.5 + asin(clamp(n.y, -1.0, 1.0)) / kPi);
+        if (HAS_SURFACE_MAPS) { // u turns with atan2(z, x), v climbs with asin(y); 0 at poles
+            s.dpdu = vec3(-n.z, 0.0, n.x);
+            s.dpdv = vec3(-n.y * n.x, n.x * n.x + n.z * n.z, -n.y * n.z);
+        }
         s.material = sphereMaterial(sphere);
     } else if (HAS_PLANES && hit.kind == kKindPlane) {
         GpuPlane plane = planeAt(hit.index);
@@ -56,7 +76,11 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         s.shadingNormal = no.xyz;
         s.shadowPosition = s.position;
         s.smoothed = false;
-        s.uv = HAS_TEXTURES ? planeUV(s.position, no.xyz) : vec2(0.0);
+        s.uv = (HAS_TEXTURES || HAS_SURFACE_MAPS) ? planeUV(s.position, no.xyz) : vec2(0.0);
+        if (HAS_SURFACE_MAPS) {
+            s.dpdu = planeAxisU(no.xyz);
+            s.dpdv = cross(no.xyz, s.dpdu);
+        }
         s.material = planeMaterial(plane);
     } else {
         GpuTriangle tri = triangleAt(hit.index);
@@ -67,7 +91,9 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         s.uv = vec2(b1, b2);
         s.shadowPosition = s.position;
         s.smoothed = false;
-        if (HAS_VERTEX_NORMALS || HAS_TEXTURES) {
+        // Without texture coordinates (u, v) = (b1, b2): corners (0, 0), (1, 0), (0, 1).
+        vec2 d1 = vec2(1.0, 0.0), d2 = vec2(0.0, 1.0);
+        if (HAS_VERTEX_NORMALS || HAS_TEXTURES || HAS_SURFACE_MAPS) {
             GpuTriangleShading sh = triangleShadingAt(hit.index);
             if (HAS_VERTEX_NORMALS && shadingHasNormals(sh)) {
                 s.shadingNormal = normalize(b0 * sh.n0.xyz + b1 * sh.n1.xyz + b2 * sh.n2.xyz);
@@ -77,9 +103,15 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
                         smoothSurfacePoint(s.position, tri.v0.xyz, tri.v1.xyz, tri.v2.xyz,
                                            sh.n0.xyz, sh.n1.xyz, sh.n2.xyz, vec3(b0, b1, b2));
             }
-            if (HAS_TEXTURES && shadingHasUVs(sh))
+            if ((HAS_TEXTURES || HAS_SURFACE_MAPS) && shadingHasUVs(sh)) {
                 s.uv = b0 * sh.uv01.xy + b1 * sh.uv01.zw + b2 * sh.uv2.xy;
+                d1 = sh.uv01.zw - sh.uv01.xy;
+                d2 = sh.uv2.xy - sh.uv01.xy;
+            }
         }
+        if (HAS_SURFACE_MAPS)
+            triangleTangents(tri.v1.xyz - tri.v0.xyz, tri.v2.xyz - tri.v0.xyz, d1, d2, s.dpdu,
+                             s.dpdv);
         s.material = triangleMaterial(tri);
     }
     return s;

@@ -22,6 +22,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "intersect.glsl"
 #include "traverse.glsl"
 #include "surface.glsl"
+#include "surface_maps.glsl"
 
 uint gShadowRays = 0u;
 uint gSecondaryRays = 0u;
@@ -50,9 +51,11 @@ vec2 samplePosition(uvec2 pixel, uint pixelIndex, uint sampleIndex) {
     return vec2(pixel) + (stratum + jitter) / vec2(columns, rows);
 }
 
-// Ambient + Blinn-Phong from every light whose shadow ray is clear.
-vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color, GpuMaterial m,
-                 uint pixelIndex, uint sampleIndex, uint depth) {
+// Ambient + Blinn-Phong from every light whose shadow ray is clear. The normals face the
+// viewer: the geometric one, the unmapped shading one (`smoothN`) and `n`, which shades (bent
+// by normal and bump maps where the material has them).
+vec3 directLight(Surface s, vec3 facingGeometric, vec3 smoothN, vec3 n, vec3 view, vec3 color,
+                 GpuMaterial m, uint pixelIndex, uint sampleIndex, uint depth) {
     vec3 result = materialAmbient(m) * color * header.ambient.rgb;
     uint lights = headerLightCount(header);
     for (uint l = 0u; l < lights; ++l) {
@@ -79,8 +82,10 @@ vec3 directLight(Surface s, vec3 facingGeometric, vec3 n, vec3 view, vec3 color,
                 // A target below the surface's own horizon (an area-light sample) is shadowed
                 // by the surface itself. With vertex normals the surface is the smooth one they
                 // describe: its point and normal (no stair-step terminator on coarse meshes).
+                // A mapped normal's horizon is not the surface's: a light behind the surface
+                // stays dark however the map leans (no leaks).
                 vec3 from = s.shadowPosition;
-                vec3 horizon = s.smoothed ? n : facingGeometric;
+                vec3 horizon = s.smoothed ? smoothN : facingGeometric;
                 visible = dot(target - from, horizon) > 0.0;
                 if (visible) {
                     vec3 origin = offsetOrigin(from, horizon, target - from);
@@ -148,11 +153,20 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
             GpuMaterial m = materialAt(s.material);
             vec3 view = -ray.dir;
             vec3 ng = dot(s.geometricNormal, view) < 0.0 ? -s.geometricNormal : s.geometricNormal;
-            vec3 n = dot(s.shadingNormal, view) < 0.0 ? -s.shadingNormal : s.shadingNormal;
+            // The side is decided by the unmapped shading normal, so a map never flips it; the
+            // map bends the normal of the side it was made for (seen from behind, a bump is a
+            // dent), then it is turned with the rest.
+            bool back = dot(s.shadingNormal, view) < 0.0;
+            vec3 smoothN = back ? -s.shadingNormal : s.shadingNormal;
+            vec3 n = smoothN;
+            if (HAS_SURFACE_MAPS) {
+                vec3 mapped = mappedNormal(s, m);
+                n = back ? -mapped : mapped;
+            }
             vec3 color = materialColor(m);
             if (HAS_TEXTURES && materialHasTexture(m))
                 color *= textureColor(materialTexture(m), s.uv);
-            radiance += ray.weight * directLight(s, ng, n, view, color, m, pixelIndex,
+            radiance += ray.weight * directLight(s, ng, smoothN, n, view, color, m, pixelIndex,
                                                  sampleIndex, ray.depth);
             if (ray.depth < maxDepth) {
                 vec3 reflected = reflect(ray.dir, n);

@@ -15,6 +15,7 @@ layout(constant_id = kSpecHasAreaLights) const bool HAS_AREA_LIGHTS = true;
 layout(constant_id = kSpecHasVertexNormals) const bool HAS_VERTEX_NORMALS = true;
 layout(constant_id = kSpecHasShadows) const bool HAS_SHADOWS = true;
 layout(constant_id = kSpecHasEnvironment) const bool HAS_ENVIRONMENT = false;
+layout(constant_id = kSpecHasSurfaceMaps) const bool HAS_SURFACE_MAPS = false;
 layout(constant_id = kSpecWriteAov) const bool WRITE_AOV = false;
 layout(constant_id = kSpecStackSize) const uint STACK_SIZE = 9u;
 // Read the arrays that have texel views through them instead of storage buffers (faster on

@@ -1,13 +1,17 @@
 #include "accel/adaptive_grid.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "accel/cell_binner.h"
 #include "accel/cell_expansion.h"
+#include "accel/grid_fragments.h"
+#include "accel/part_lists.h"
 #include "core/error.h"
 #include "core/parallel_for.h"
 #include "shared/gpu_types.h"
@@ -15,7 +19,6 @@
 namespace prism {
 namespace {
 
-constexpr uint32_t kMaxIndex = 1u << 28; // entries keep 4 bits for the split
 // What a step to the next cell costs against one primitive test, for the split decision.
 constexpr double kStepCost = 1.0;
 // Splits in a row that leave some part with all the cell's primitives (see build).
@@ -31,31 +34,20 @@ uint32_t chooseShift(const glm::ivec3 &topResolution, uint32_t maxDepth) {
     return shift;
 }
 
-// One top cell's subtree, built apart from the others so that top cells can be built in
-// parallel. Entries and cells are numbered from 0 within the fragment (entry 0 is the top cell's
-// own) and renumbered when the fragments are joined, in top-cell order: the grid is the same
-// whatever thread built what.
-struct Fragment {
-    std::vector<uint32_t> entries{0u};
-    std::vector<glm::uvec4> cellBoxes;
-    std::vector<uint32_t> cellCounts; // primitives per cell
-    std::vector<uint32_t> cellPrimitives;
-    uint32_t depth = 0;
-    uint32_t maxPerCell = 0;
-};
-
 class Splitter {
 public:
-    Splitter(Fragment &out, const Grid &grid, const FinitePrimitives &primitives, double density,
-             double magnitude, size_t budget, const AdaptiveStyle &style)
-        : out_(out), grid_(grid), primitives_(primitives), density_(density), magnitude_(magnitude),
-          voxelSize_(glm::dvec3(grid.voxelSize())), budget_(budget), style_(style) {}
+    Splitter(Fragment &out, const Grid &grid, const FinitePrimitives &primitives,
+             const std::vector<Aabb> &bounds, double density, double magnitude, size_t budget,
+             const AdaptiveStyle &style)
+        : out_(out), grid_(grid), primitives_(primitives), bounds_(bounds), density_(density),
+          magnitude_(magnitude), voxelSize_(glm::dvec3(grid.voxelSize())), budget_(budget),
+          style_(style) {}
 
     // Makes entry `entry` the cell, or the tree of cells, of the box of 2^sizeShift voxels per
     // axis from voxelMin, which `refs` overlap.
     // `idleSplits`: how many splits above in a row left some part with all their primitives.
     void build(uint32_t entry, glm::ivec3 voxelMin, uint32_t sizeShift, uint32_t level,
-               uint32_t idleSplits, std::vector<uint32_t> refs) {
+               uint32_t idleSplits, std::span<const uint32_t> refs) {
         uint32_t n = uint32_t(refs.size());
         uint32_t split = chooseSplit(n, sizeShift, level);
         if (split == 0) {
@@ -72,8 +64,14 @@ public:
         // they are needed, instead of being repeated at every level and candidate.
         uint32_t best = style_.costModel ? 0 : split;
         double bestCost = double(n);
+        if (!style_.costModel)
+            referencesAfter(refs, voxelMin, sizeShift, split); // the ranges binning reads
         for (uint32_t d = split; d >= 1 && style_.costModel; --d) {
             double parts = double(1u << d);
+            // Each ref lands in one part at least: a split whose cost with n references does
+            // not beat the best is not counted (the same choice, without the counting).
+            if (kStepCost * 1.5 * parts + double(n) / (parts * parts) >= bestCost)
+                continue;
             double cost = kStepCost * 1.5 * parts +
                           double(referencesAfter(refs, voxelMin, sizeShift, d)) / (parts * parts);
             if (cost < bestCost) {
@@ -88,26 +86,21 @@ public:
         split = best;
         uint32_t childShift = sizeShift - split, parts = 1u << split;
         Lattice children = childLattice(voxelMin, sizeShift, split);
-        std::vector<std::vector<uint32_t>> childRefs(children.count());
-        CellBinner binner(children);
-        for (uint32_t id : refs)
-            binner.binBounds(id, primitives_, childRefs);
-        size_t fullest = 0;
-        for (const std::vector<uint32_t> &list : childRefs)
-            fullest = std::max(fullest, list.size());
+        // Each part's list, by bounding box, sorted by the ranges found when the split was
+        // priced.
+        PartLists childRefs = sortIntoParts(ranges_[split], children, refs);
         // A split that leaves some part with every primitive may still help further down (a
         // small cluster in a big cell), but three in a row mean the primitives cannot be told
         // apart (all in one point, a fan around one vertex): the cell stays whole. This also
         // bounds the work and the empty cells such scenes cost.
-        idleSplits = fullest >= n ? idleSplits + 1 : 0;
+        idleSplits = childRefs.fullest >= n ? idleSplits + 1 : 0;
         if (idleSplits >= kMaxIdleSplits) {
             makeLeaf(entry, voxelMin, sizeShift, refs);
             return;
         }
-        refs = {}; // free before going down
 
         size_t first = out_.entries.size();
-        if (first + children.count() > kMaxIndex)
+        if (first + children.count() > kMaxAdaptiveIndex)
             throw Error("adaptive grid needs more than 2^28 voxel-map entries; use --grid regular");
         out_.entries.resize(first + children.count());
         out_.entries[entry] = uint32_t(first) << 4 | split;
@@ -119,9 +112,10 @@ public:
                 for (int x = 0; x < int(parts); ++x) {
                     glm::ivec3 cell = children.lo + glm::ivec3(x, y, z);
                     uint32_t local = children.local(cell);
-                    if (!style_.mergeEmptyParts || !childRefs[local].empty())
+                    std::span<const uint32_t> list = childRefs.list(local);
+                    if (!style_.mergeEmptyParts || !list.empty())
                         build(uint32_t(first) + local, cell << int(childShift), childShift,
-                              level + 1, idleSplits, std::move(childRefs[local]));
+                              level + 1, idleSplits, list);
                 }
     }
 
@@ -138,16 +132,17 @@ private:
         return l;
     }
 
-    // References over all parts of a split, by bounding box.
-    size_t referencesAfter(const std::vector<uint32_t> &refs, glm::ivec3 voxelMin,
-                           uint32_t sizeShift, uint32_t split) const {
+    // References over all parts of a split, by bounding box. Keeps each ref's range of parts
+    // in ranges_[split] for the binning, should this split be made.
+    size_t referencesAfter(std::span<const uint32_t> refs, glm::ivec3 voxelMin, uint32_t sizeShift,
+                           uint32_t split) {
         CellBinner binner(childLattice(voxelMin, sizeShift, split));
+        std::vector<CellRange> &ranges = ranges_[split];
+        ranges.resize(refs.size());
         size_t references = 0;
-        for (uint32_t id : refs) {
-            glm::ivec3 lo, hi;
-            binner.boundsRange(primitives_.bounds(id), lo, hi);
-            glm::ivec3 span = hi - lo + 1;
-            references += size_t(span.x) * size_t(span.y) * size_t(span.z);
+        for (size_t i = 0; i < refs.size(); ++i) {
+            binner.boundsRange(bounds_[refs[i]], ranges[i].lo, ranges[i].hi);
+            references += ranges[i].cells();
         }
         return references;
     }
@@ -166,12 +161,12 @@ private:
     // The cell of 2^sizeShift voxels from voxelMin, listing exactly the `refs` that overlap it
     // (refs came down by bounding box: a superset).
     void makeLeaf(uint32_t entry, glm::ivec3 voxelMin, uint32_t sizeShift,
-                  const std::vector<uint32_t> &refs) {
+                  std::span<const uint32_t> refs) {
         Lattice self = childLattice(voxelMin, sizeShift, 0);
         CellBinner binner(self);
         uint32_t count = 0;
         for (uint32_t id : refs)
-            if (binner.overlaps(id, primitives_, self.lo)) {
+            if (binner.overlaps(id, bounds_[id], primitives_, self.lo)) {
                 out_.cellPrimitives.push_back(id);
                 ++count;
             }
@@ -185,12 +180,12 @@ private:
     // commonest case). Surfaces leave most parts of a split empty; one cell per part made most
     // of the adaptive grid's cells, memory and expansion work.
     void mergeEmptyParts(uint32_t first, const Lattice &parts, uint32_t childShift,
-                         const std::vector<std::vector<uint32_t>> &childRefs) {
+                         const PartLists &childRefs) {
         glm::ivec3 size = parts.size();
-        std::vector<bool> taken(childRefs.size());
+        std::vector<bool> taken(parts.count());
         auto untaken = [&](glm::ivec3 c) { // an empty part not yet in a merged cell
             uint32_t i = uint32_t(c.x + size.x * (c.y + size.y * c.z));
-            return childRefs[i].empty() && !taken[i];
+            return childRefs.empty(i) && !taken[i];
         };
         auto untakenBox = [&](glm::ivec3 lo, glm::ivec3 hi) {
             for (int z = lo.z; z < hi.z; ++z)
@@ -230,7 +225,7 @@ private:
     // Appends a cell with the given box whose `count` primitives the caller appends.
     size_t newCell(glm::ivec3 boxMin, glm::ivec3 boxMax, uint32_t count) {
         size_t cell = out_.cellBoxes.size();
-        if (cell >= kMaxIndex)
+        if (cell >= kMaxAdaptiveIndex)
             throw Error("adaptive grid needs more than 2^28 cells; use --grid regular");
         out_.cellBoxes.push_back(packCellBox(boxMin, boxMax));
         out_.cellCounts.push_back(count);
@@ -241,39 +236,15 @@ private:
     Fragment &out_;
     const Grid &grid_;
     const FinitePrimitives &primitives_;
+    const std::vector<Aabb> &bounds_; // each primitive's, computed once
     double density_;
     double magnitude_;
     glm::dvec3 voxelSize_;
     size_t budget_;
     AdaptiveStyle style_;
+    // Each ref's range of parts for each candidate split (index: split), from pricing to binning.
+    std::array<std::vector<CellRange>, kAdaptiveMaxSplit + 1> ranges_;
 };
-
-// Appends a top cell's fragment to the grid, renumbering its entries and cells.
-void join(Grid &grid, uint32_t topCell, const Fragment &f) {
-    uint64_t entryBase = grid.entries.size(), cellBase = grid.cellBoxes.size();
-    if (entryBase + f.entries.size() > kMaxIndex)
-        throw Error("adaptive grid needs more than 2^28 voxel-map entries; use --grid regular");
-    if (cellBase + f.cellBoxes.size() > kMaxIndex)
-        throw Error("adaptive grid needs more than 2^28 cells; use --grid regular");
-    if (grid.cellPrimitives.size() + f.cellPrimitives.size() >= uint64_t(UINT32_MAX))
-        throw Error("grid holds more than 2^32 primitive references; use --grid regular");
-    auto renumber = [&](uint32_t entry) {
-        uint32_t split = entry & 15u, target = entry >> 4;
-        // Entry 0 is the top cell's own; the fragment's entry j > 0 lands at entryBase + j - 1.
-        target = split != 0 ? uint32_t(entryBase) + target - 1 : uint32_t(cellBase) + target;
-        return target << 4 | split;
-    };
-    grid.entries[topCell] = renumber(f.entries[0]);
-    for (size_t j = 1; j < f.entries.size(); ++j)
-        grid.entries.push_back(renumber(f.entries[j]));
-    grid.cellBoxes.insert(grid.cellBoxes.end(), f.cellBoxes.begin(), f.cellBoxes.end());
-    for (uint32_t count : f.cellCounts)
-        grid.cellStart.push_back(grid.cellStart.back() + count);
-    grid.cellPrimitives.insert(grid.cellPrimitives.end(), f.cellPrimitives.begin(),
-                               f.cellPrimitives.end());
-    grid.depth = std::max(grid.depth, f.depth);
-    grid.maxPerCell = std::max(grid.maxPerCell, f.maxPerCell);
-}
 
 } // namespace
 
@@ -281,11 +252,23 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
                         const AdaptiveStyle &style) {
     grid.shift = chooseShift(grid.resolution, style.maxDepth);
     Lattice top = wholeGrid(grid);
-    // By bounding box, as every level above the leaves (Splitter::build).
+    // Bounding boxes, computed once: every level above the leaves bins by them, as the top
+    // grid does here (their ranges found in parallel, then sorted: ids ascending in a cell).
+    std::vector<Aabb> bounds(primitives.count());
+    std::vector<CellRange> ranges(primitives.count());
+    std::vector<uint32_t> ids(primitives.count());
     CellBinner binner(top);
-    std::vector<std::vector<uint32_t>> topRefs(top.count());
-    for (uint32_t id = 0; id < primitives.count(); ++id)
-        binner.binBounds(id, primitives, topRefs); // ids ascending in a cell
+    constexpr size_t kBlock = 4096;
+    parallelFor((bounds.size() + kBlock - 1) / kBlock, [&](size_t block) {
+        for (size_t id = block * kBlock; id < std::min(bounds.size(), (block + 1) * kBlock); ++id) {
+            bounds[id] = primitives.bounds(uint32_t(id));
+            binner.boundsRange(bounds[id], ranges[id].lo, ranges[id].hi);
+            ids[id] = uint32_t(id);
+        }
+    });
+    PartLists topRefs = sortIntoParts(ranges, top, ids);
+    ranges = {};
+    ids = {};
 
     // Cells and entries at most ~64 per primitive a top cell holds (and a floor for small
     // cells): a safety net on memory and build time, far above what the cost model asks for.
@@ -294,18 +277,13 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
         glm::ivec3 cell(int(t % uint32_t(grid.resolution.x)),
                         int(t / uint32_t(grid.resolution.x) % uint32_t(grid.resolution.y)),
                         int(t / (uint64_t(grid.resolution.x) * uint32_t(grid.resolution.y))));
-        size_t budget = 64 * topRefs[t].size() + 4096;
-        Splitter splitter(fragments[t], grid, primitives, double(options.density), top.magnitude,
-                          budget, style);
-        splitter.build(0, cell << int(grid.shift), grid.shift, 0, 0, std::move(topRefs[t]));
+        std::span<const uint32_t> refs = topRefs.list(t);
+        size_t budget = 64 * refs.size() + 4096;
+        Splitter splitter(fragments[t], grid, primitives, bounds, double(options.density),
+                          top.magnitude, budget, style);
+        splitter.build(0, cell << int(grid.shift), grid.shift, 0, 0, refs);
     });
-    grid.entries.assign(top.count(), 0u);
-    grid.cellStart = {0u};
-    grid.depth = 0;
-    for (uint32_t t = 0; t < top.count(); ++t) {
-        join(grid, t, fragments[t]);
-        fragments[t] = {}; // free as we go
-    }
+    joinFragments(grid, fragments);
     if (style.expand)
         expandCells(grid);
 }

@@ -2,6 +2,7 @@
 // Putting primitives into the cells of a lattice they overlap, exactly (each kind's own overlap
 // test) and with a thin slack so that the shader's float walk never misses one.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -39,6 +40,7 @@ public:
         // Cells are widened a little so a hit found by the shader's float walk near a cell face
         // is listed in the cell on either side of it (rounding may put the walk in either).
         slack_ = 1e-4 * lattice.cellSize + glm::dvec3(4e-7 * lattice.magnitude);
+        inverseCellSize_ = 1.0 / lattice.cellSize;
     }
 
     // Appends (local cell, id) for every cell of the window that primitive `id` overlaps.
@@ -51,18 +53,6 @@ public:
                 for (int x = lo.x; x <= hi.x; ++x)
                     if (overlaps(id, primitives, {x, y, z}))
                         pairs.emplace_back(lattice_.local({x, y, z}), id);
-    }
-
-    // Appends `id` to lists[local cell] for every cell of the window its bounding box (grown by
-    // the slack) overlaps: a superset of the cells it overlaps, without an exact test.
-    void binBounds(uint32_t id, const FinitePrimitives &primitives,
-                   std::vector<std::vector<uint32_t>> &lists) const {
-        glm::ivec3 lo, hi;
-        boundsRange(primitives.bounds(id), lo, hi);
-        for (int z = lo.z; z <= hi.z; ++z)
-            for (int y = lo.y; y <= hi.y; ++y)
-                for (int x = lo.x; x <= hi.x; ++x)
-                    lists[lattice_.local({x, y, z})].push_back(id);
     }
 
     // The cells [lo, hi] (inclusive) of the window that `bounds`, grown by the slack, overlaps:
@@ -79,15 +69,43 @@ public:
         return primitives.overlapsBox(id, cmin - slack_, cmax + slack_);
     }
 
+    // The same, given the primitive's bounding box: a primitive whose box lies inside the cell
+    // overlaps it, without the exact test (most of a fine cell's primitives, where the
+    // separating-axis test of a triangle is the costly part of a leaf).
+    bool overlaps(uint32_t id, const Aabb &bounds, const FinitePrimitives &primitives,
+                  glm::ivec3 cell) const {
+        glm::dvec3 cmin = lattice_.origin + glm::dvec3(cell) * lattice_.cellSize;
+        glm::dvec3 cmax = cmin + lattice_.cellSize;
+        glm::dvec3 lo = cmin - slack_, hi = cmax + slack_;
+        if (glm::all(glm::greaterThanEqual(bounds.min, lo)) &&
+            glm::all(glm::lessThanEqual(bounds.max, hi)))
+            return true;
+        return primitives.overlapsBox(id, lo, hi);
+    }
+
 private:
     glm::ivec3 cellOf(const glm::dvec3 &p) const {
-        glm::dvec3 f = glm::floor((p - lattice_.origin) / lattice_.cellSize);
+        glm::dvec3 f;
+        for (int a = 0; a < 3; ++a)
+            f[a] = floorOfQuotient(p[a] - lattice_.origin[a], a);
         return glm::clamp(glm::ivec3(glm::clamp(f, glm::dvec3(-1e9), glm::dvec3(1e9))), lattice_.lo,
                           lattice_.hi - 1);
     }
 
+    // floor(d / cellSize[axis]), bit for bit, mostly without dividing: the product with the
+    // reciprocal is within a few ulps of the quotient, so the two floor alike unless the
+    // product lies that close to an integer; there the division decides.
+    double floorOfQuotient(double d, int axis) const {
+        double q = d * inverseCellSize_[axis], f = std::floor(q);
+        double margin = 1e-12 * std::max(1.0, std::abs(q));
+        if (q - f > margin && f + 1.0 - q > margin)
+            return f;
+        return std::floor(d / lattice_.cellSize[axis]);
+    }
+
     Lattice lattice_;
     glm::dvec3 slack_;
+    glm::dvec3 inverseCellSize_;
 };
 
 } // namespace prism

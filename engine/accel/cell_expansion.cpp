@@ -1,79 +1,99 @@
 #include "accel/cell_expansion.h"
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
+#include "accel/grid_walk.h"
 #include "core/parallel_for.h"
 
 namespace prism {
 namespace {
 
-// Calls visit(cell) for the cells of the voxel map that overlap the voxel box [lo, hi), until
-// one returns false. Returns whether all returned true. (A cell covering several entries of
-// the map may be visited more than once.)
-template <typename Visit> class MapQuery {
-public:
-    MapQuery(const Grid &grid, glm::ivec3 lo, glm::ivec3 hi, Visit &visit)
-        : grid_(grid), lo_(lo), hi_(hi), visit_(visit) {}
+// A cell's box as built (the boxes tile the voxel grid then) and where its primitives start, in
+// 16 bytes: the expansion's time goes mostly to fetching these for neighbours, so they are
+// small, unpacked once, and a cell's count comes from the next record, usually in the same
+// cache line. One more record at the end holds the references' end.
+struct CellRecord {
+    std::array<uint16_t, 3> lo, hi;
+    uint32_t first; // cellPrimitives[first .. (this + 1)->first)
 
-    bool run() {
-        int shift = int(grid_.shift);
-        glm::ivec3 first = lo_ >> shift, last = (hi_ - 1) >> shift;
-        for (int z = first.z; z <= last.z; ++z)
-            for (int y = first.y; y <= last.y; ++y)
-                for (int x = first.x; x <= last.x; ++x) {
-                    glm::ivec3 top(x, y, z);
-                    if (!descend(grid_.entries[grid_.cellIndex(top)], top << shift, shift))
-                        return false;
-                }
-        return true;
-    }
+    int min(int axis) const { return lo[size_t(axis)]; }
+    int max(int axis) const { return hi[size_t(axis)]; }
+    uint32_t count() const { return (this + 1)->first - first; }
+};
+static_assert(sizeof(CellRecord) == 16);
 
-private:
-    bool descend(uint32_t entry, glm::ivec3 nodeMin, int nodeShift) {
-        int split = int(entry & 15u);
-        if (split == 0)
-            return visit_(entry >> 4);
-        int childShift = nodeShift - split, parts = 1 << split;
-        glm::ivec3 first = glm::max(lo_ - nodeMin, glm::ivec3(0)) >> childShift;
-        glm::ivec3 last = glm::min((hi_ - 1 - nodeMin) >> childShift, glm::ivec3(parts - 1));
-        for (int z = first.z; z <= last.z; ++z)
-            for (int y = first.y; y <= last.y; ++y)
-                for (int x = first.x; x <= last.x; ++x) {
-                    uint32_t child = (entry >> 4) + uint32_t(x + (y << split) + (z << (2 * split)));
-                    if (!descend(grid_.entries[child],
-                                 nodeMin + (glm::ivec3(x, y, z) << childShift), childShift))
-                        return false;
-                }
-        return true;
-    }
+// In blocks of `block` cells, in parallel.
+std::vector<CellRecord> cellRecords(const Grid &grid, size_t block) {
+    size_t cells = grid.cellBoxes.size();
+    std::vector<CellRecord> records(cells + 1);
+    parallelFor((cells + block - 1) / block, [&](size_t b) {
+        for (size_t c = b * block; c < std::min(cells, (b + 1) * block); ++c) {
+            glm::ivec3 lo, hi;
+            unpackCellBox(grid.cellBoxes[c], lo, hi);
+            for (int a = 0; a < 3; ++a) {
+                records[c].lo[size_t(a)] = uint16_t(lo[a]);
+                records[c].hi[size_t(a)] = uint16_t(hi[a]);
+            }
+            records[c].first = grid.cellStart[c];
+        }
+    });
+    records.back().first = grid.cellStart.back();
+    return records;
+}
 
-    const Grid &grid_;
-    glm::ivec3 lo_, hi_;
-    Visit &visit_;
+// A rectangle [u0, u1) x [w0, w1) of a layer, in the layer's two in-plane axes.
+struct Rect {
+    int u0, u1, w0, w1;
 };
 
+// Calls visit(cell record) for the cells that the one-voxel layer [lo, hi) across `axis`
+// meets, until one returns false; returns whether all returned true. The boxes as built tile the
+// grid, so the cell holding a rectangle's first corner covers a rectangle of it at once, and
+// the two rectangles left are queried in turn: one lookup per cell (a cell cut by the split
+// may come twice), where descending the voxel map met every map entry of a merged cell.
 template <typename Visit>
-bool allCellsIn(const Grid &grid, glm::ivec3 lo, glm::ivec3 hi, Visit visit) {
-    return MapQuery<Visit>(grid, lo, hi, visit).run();
+bool eachCellInLayer(const Grid &grid, const std::vector<CellRecord> &cells, glm::ivec3 lo,
+                     glm::ivec3 hi, int axis, std::vector<Rect> &stack, Visit visit) {
+    int u = (axis + 1) % 3, w = (axis + 2) % 3;
+    stack.assign(1, Rect{lo[u], hi[u], lo[w], hi[w]});
+    glm::ivec3 corner = lo;
+    while (!stack.empty()) {
+        Rect r = stack.back();
+        stack.pop_back();
+        corner[u] = r.u0;
+        corner[w] = r.w0;
+        const CellRecord &n = cells[adaptiveCellAt(grid, corner)];
+        if (!visit(n))
+            return false;
+        int coveredU = std::min(r.u1, n.max(u)), coveredW = std::min(r.w1, n.max(w));
+        if (coveredU < r.u1)
+            stack.push_back({coveredU, r.u1, r.w0, coveredW});
+        if (coveredW < r.w1)
+            stack.push_back({r.u0, r.u1, coveredW, r.w1});
+    }
+    return true;
 }
 
 // Cell `cell`'s box after expansion; reads only the grid as built.
-glm::uvec4 expandedBox(const Grid &grid, uint32_t cell) {
+glm::uvec4 expandedBox(const Grid &grid, const std::vector<CellRecord> &cells, uint32_t cell,
+                       std::vector<Rect> &stack) {
     glm::ivec3 resolution = grid.voxelResolution();
-    auto refs = [&](uint32_t c) {
-        return std::make_pair(grid.cellPrimitives.begin() + grid.cellStart[c],
-                              grid.cellPrimitives.begin() + grid.cellStart[c + 1]);
-    };
+    const CellRecord &self = cells[cell];
     glm::ivec3 lo, hi;
     unpackCellBox(grid.cellBoxes[cell], lo, hi);
-    auto [first, last] = refs(cell);
+    uint32_t count = self.count();
+    auto first = grid.cellPrimitives.begin() + self.first, last = first + count;
+    // A face that failed stays failed: its layer does not move, and only widens as the other
+    // faces grow, so the neighbour that failed it is still there. Skipping it changes nothing.
+    std::array<bool, 6> failed{};
     for (int round = 0; round < kExpansionRounds; ++round) {
         bool grew = false;
         for (int face = 0; face < 6; ++face) {
             int axis = face / 2;
             bool up = face % 2 == 0;
-            if (up ? hi[axis] >= resolution[axis] : lo[axis] <= 0)
+            if (failed[face] || (up ? hi[axis] >= resolution[axis] : lo[axis] <= 0))
                 continue;
             // The one-voxel layer just past the face: the cells it touches must each be
             // listed in full here; the layer grows to the thinnest of them.
@@ -86,21 +106,22 @@ glm::uvec4 expandedBox(const Grid &grid, uint32_t cell) {
                 layerHi[axis] = lo[axis];
             }
             int step = resolution[axis];
-            uint32_t previous = ~0u; // a merged cell comes up once for each of its map entries
-            bool allowed = allCellsIn(grid, layerLo, layerHi, [&](uint32_t neighbour) {
-                if (neighbour == previous)
+            bool allowed = eachCellInLayer(
+                grid, cells, layerLo, layerHi, axis, stack, [&](const CellRecord &n) {
+                    uint32_t nCount = n.count();
+                    if (nCount > count)
+                        return false;
+                    auto nFirst = grid.cellPrimitives.begin() + n.first;
+                    if (nCount > 0 && !std::includes(first, last, nFirst, nFirst + nCount))
+                        return false;
+                    step = std::min(step, up ? n.max(axis) - hi[axis] : lo[axis] - n.min(axis));
                     return true;
-                previous = neighbour;
-                auto [nFirst, nLast] = refs(neighbour);
-                if (nLast - nFirst > last - first || !std::includes(first, last, nFirst, nLast))
-                    return false;
-                glm::ivec3 nLo, nHi;
-                unpackCellBox(grid.cellBoxes[neighbour], nLo, nHi);
-                step = std::min(step, up ? nHi[axis] - hi[axis] : lo[axis] - nLo[axis]);
-                return true;
-            });
-            if (!allowed || step <= 0)
+                });
+            if (!allowed) {
+                failed[face] = true;
                 continue;
+            }
+            // A cell in the layer reaches past the face, so step >= 1.
             if (up)
                 hi[axis] += step;
             else
@@ -120,10 +141,12 @@ void expandCells(Grid &grid) {
     // in blocks of kBlock, with the same result on every run.
     constexpr size_t kBlock = 256;
     size_t cells = grid.cellBoxes.size();
+    std::vector<CellRecord> records = cellRecords(grid, 64 * kBlock);
     std::vector<glm::uvec4> grown(cells);
     parallelFor((cells + kBlock - 1) / kBlock, [&](size_t block) {
+        std::vector<Rect> stack;
         for (size_t cell = block * kBlock; cell < std::min(cells, (block + 1) * kBlock); ++cell)
-            grown[cell] = expandedBox(grid, uint32_t(cell));
+            grown[cell] = expandedBox(grid, records, uint32_t(cell), stack);
     });
     grid.cellBoxes = std::move(grown);
 }

@@ -5,20 +5,6 @@
 
 namespace prism {
 
-// Down the voxel map from v's top cell, as the tracer does (traverse.glsl).
-uint32_t adaptiveCellAt(const Grid &grid, glm::ivec3 v) {
-    uint32_t entry = grid.entries[grid.cellIndex(v >> int(grid.shift))];
-    int shift = int(grid.shift);
-    while ((entry & 15u) != 0) {
-        int split = int(entry & 15u);
-        shift -= split;
-        glm::ivec3 part = (v >> shift) & ((1 << split) - 1);
-        entry = grid.entries[(entry >> 4) +
-                             uint32_t(part.x + (part.y << split) + (part.z << (2 * split)))];
-    }
-    return entry >> 4;
-}
-
 namespace {
 
 // From cell to cell: each cell's box is left through its nearest exit face, and the next cell is

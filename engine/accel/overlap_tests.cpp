@@ -39,12 +39,17 @@ bool triangleOverlapsBox(const glm::dvec3 &p0, const glm::dvec3 &p1, const glm::
     // The triangle's plane.
     if (separatedOnAxis(glm::cross(edges[0], edges[1]), v, half))
         return false;
-    // Edge x box-axis cross products.
+    // Edge x box-axis cross products: e x unit(a) has a zero in coordinate a and (e[b], -e[c])
+    // in the two others (b, c the axes after a), so each projection is two products. The same
+    // values as the general dot product: the zero term adds nothing, in floating point too.
     for (const glm::dvec3 &e : edges)
         for (int a = 0; a < 3; ++a) {
-            glm::dvec3 unit(0.0);
-            unit[a] = 1.0;
-            if (separatedOnAxis(glm::cross(e, unit), v, half))
+            int b = (a + 1) % 3, c = (a + 2) % 3;
+            double p0 = e[c] * v[0][b] - e[b] * v[0][c];
+            double p1 = e[c] * v[1][b] - e[b] * v[1][c];
+            double p2 = e[c] * v[2][b] - e[b] * v[2][c];
+            double r = half[b] * std::abs(e[c]) + half[c] * std::abs(e[b]);
+            if (std::min({p0, p1, p2}) > r || std::max({p0, p1, p2}) < -r)
                 return false;
         }
     return true;

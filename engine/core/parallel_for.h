@@ -13,8 +13,33 @@
 
 namespace prism {
 
+// The threads parallelFor may use; 0 means one per core. Set through ParallelThreads.
+inline std::atomic<unsigned> &parallelThreadLimit() {
+    static std::atomic<unsigned> limit{0};
+    return limit;
+}
+
+inline unsigned parallelThreadCount() {
+    unsigned limit = parallelThreadLimit();
+    return limit > 0 ? limit : std::max(1u, std::thread::hardware_concurrency());
+}
+
+// Limits parallelFor to `threads` threads while it lives (0: one per core), so that tests can
+// hold a build to the same result at every thread count and benchmarks can measure scaling.
+class ParallelThreads {
+public:
+    explicit ParallelThreads(unsigned threads)
+        : previous_(parallelThreadLimit().exchange(threads)) {}
+    ~ParallelThreads() { parallelThreadLimit() = previous_; }
+    ParallelThreads(const ParallelThreads &) = delete;
+    ParallelThreads &operator=(const ParallelThreads &) = delete;
+
+private:
+    unsigned previous_;
+};
+
 template <typename Body> void parallelFor(size_t count, Body body) {
-    size_t threads = std::min<size_t>(count, std::max(1u, std::thread::hardware_concurrency()));
+    size_t threads = std::min<size_t>(count, parallelThreadCount());
     if (threads <= 1) {
         for (size_t i = 0; i < count; ++i)
             body(i);

@@ -19,6 +19,19 @@ int wrapIndex(double base, int size) {
     return std::clamp(int(wrapped), 0, size - 1);
 }
 
+double signOf(double x) {
+    return x > 0.0 ? 1.0 : (x < 0.0 ? -1.0 : 0.0);
+}
+
+// dp/du and dp/dv of a triangle from the UV differences d1, d2 along its edges e1, e2
+// (Lengyel): the solution of e = du * dp/du + dv * dp/dv, times sign(det) instead of divided
+// by det, as only directions matter; zero when the UVs have no area.
+void triangleTangents(glm::dvec3 e1, glm::dvec3 e2, glm::dvec2 d1, glm::dvec2 d2, Surface &s) {
+    double det = d1.x * d2.y - d1.y * d2.x;
+    s.dpdu = signOf(det) * (d2.y * e1 - d1.y * e2);
+    s.dpdv = signOf(det) * (d1.x * e2 - d2.x * e1);
+}
+
 } // namespace
 
 Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit) {
@@ -36,6 +49,9 @@ Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit) {
         s.shadingNormal = n;
         s.uv = glm::dvec2(0.5 + std::atan2(n.z, n.x) / (2.0 * kPi),
                           0.5 + std::asin(std::clamp(n.y, -1.0, 1.0)) / kPi);
+        // d/du along the parallel (u turns with atan2(z, x)), d/dv along the meridian, up.
+        s.dpdu = glm::dvec3(-n.z, 0.0, n.x);
+        s.dpdv = glm::dvec3(-n.y * n.x, n.x * n.x + n.z * n.z, -n.y * n.z);
         s.material = sphere.material;
         break;
     }
@@ -48,6 +64,8 @@ Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit) {
         s.geometricNormal = eq.normal;
         s.shadingNormal = eq.normal;
         s.uv = planeUV(s.position, eq.normal);
+        s.dpdu = planeAxisU(eq.normal);
+        s.dpdv = glm::cross(eq.normal, s.dpdu);
         s.material = plane.material;
         break;
     }
@@ -74,9 +92,14 @@ Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit) {
                 s.shadowPosition = smoothSurfacePoint(s.position, corner, normal, b);
             }
         }
-        if (tri.hasUVs)
-            s.uv = b0 * glm::dvec2(tri.uv[0]) + b1 * glm::dvec2(tri.uv[1]) +
-                   b2 * glm::dvec2(tri.uv[2]);
+        // Without texture coordinates (u, v) = (b1, b2): corners (0, 0), (1, 0), (0, 1).
+        glm::dvec2 uv[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
+        if (tri.hasUVs) {
+            for (int c = 0; c < 3; ++c)
+                uv[c] = glm::dvec2(tri.uv[c]);
+            s.uv = b0 * uv[0] + b1 * uv[1] + b2 * uv[2];
+        }
+        triangleTangents(p1 - p0, p2 - p0, uv[1] - uv[0], uv[2] - uv[0], s);
         s.material = tri.material;
         break;
     }
@@ -108,14 +131,17 @@ glm::dvec3 missColor(const Scene &scene, glm::dvec3 dir) {
            textureColor(image, glm::dvec2(u, std::clamp(v, halfTexel, 1.0 - halfTexel)));
 }
 
-glm::dvec2 planeUV(glm::dvec3 p, glm::dvec3 n) {
+glm::dvec3 planeAxisU(glm::dvec3 n) {
     glm::dvec3 a = glm::abs(n);
     glm::dvec3 axis = (a.x <= a.y && a.x <= a.z)
                           ? glm::dvec3(1, 0, 0)
                           : (a.y <= a.z ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1));
-    glm::dvec3 a1 = glm::normalize(glm::cross(n, axis));
-    glm::dvec3 a2 = glm::cross(n, a1);
-    return glm::dvec2(glm::dot(p, a1), glm::dot(p, a2));
+    return glm::normalize(glm::cross(n, axis));
+}
+
+glm::dvec2 planeUV(glm::dvec3 p, glm::dvec3 n) {
+    glm::dvec3 a1 = planeAxisU(n);
+    return glm::dvec2(glm::dot(p, a1), glm::dot(p, glm::cross(n, a1)));
 }
 
 glm::dvec3 textureColor(const Texture &texture, glm::dvec2 uv) {

@@ -21,6 +21,10 @@ struct Surface {
     // its front, the point of the smooth surface those normals describe (smoothSurfacePoint).
     glm::dvec3 shadowPosition;
     bool smooth = false; // vertex normals: the horizon for shadow rays is the shading normal's
+    // Directions of increasing u and v on the surface (any length; zero where the UVs have no
+    // area), for the tangent frame of normal and bump maps (surface_maps_reference.h).
+    glm::dvec3 dpdu{0.0};
+    glm::dvec3 dpdv{0.0};
 };
 
 // Hanika, "Hacking the Shadow Terminator" (Ray Tracing Gems II, 2021): p projected onto each
@@ -38,6 +42,7 @@ Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit);
 // Plane texture axes: a1 = normalize(n x e) with e the world axis least aligned with n (x before
 // y before z on ties), a2 = n x a1; (u, v) = (P . a1, P . a2).
 glm::dvec2 planeUV(glm::dvec3 p, glm::dvec3 n);
+glm::dvec3 planeAxisU(glm::dvec3 n); // a1 above
 
 // Bilinear lookup with wrap-around; v = 0 is the image's bottom row (texels are stored top row
 // first).

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "reference/scene_query.h"
+#include "reference/surface_maps_reference.h"
 #include "shared/sampling.h"
 
 namespace prism::reference {
@@ -39,8 +40,8 @@ glm::dvec3 surfaceColor(const Scene &scene, const Material &m, glm::dvec2 uv) {
 } // namespace
 
 glm::dvec3 directLight(const Scene &scene, const Surface &s, glm::dvec3 facingGeometric,
-                       glm::dvec3 n, glm::dvec3 view, glm::dvec3 color, const Material &m,
-                       SampleId sample, uint32_t depth, RayCounts &rays) {
+                       glm::dvec3 smoothN, glm::dvec3 n, glm::dvec3 view, glm::dvec3 color,
+                       const Material &m, SampleId sample, uint32_t depth, RayCounts &rays) {
     glm::dvec3 result = double(m.ambient) * color * glm::dvec3(scene.ambient);
     uint32_t lightCount = uint32_t(scene.lights.size());
     for (uint32_t l = 0; l < lightCount; ++l) {
@@ -60,8 +61,9 @@ glm::dvec3 directLight(const Scene &scene, const Surface &s, glm::dvec3 facingGe
         }
         // A target below the surface's own horizon is shadowed by the surface itself. With
         // vertex normals the surface is the smooth one they describe: its point and normal.
+        // Never a mapped normal's horizon: a light behind the surface stays dark (no leaks).
         glm::dvec3 from = s.shadowPosition;
-        glm::dvec3 horizon = s.smooth ? n : facingGeometric;
+        glm::dvec3 horizon = s.smooth ? smoothN : facingGeometric;
         if (!(glm::dot(target - from, horizon) > 0.0))
             continue;
         glm::dvec3 origin = offsetOrigin(from, horizon, target - from);
@@ -103,10 +105,14 @@ glm::dvec3 traceRadiance(const Scene &scene, const Ray &primary, SampleId sample
         // Both normals turned to face the viewer.
         glm::dvec3 ng =
             glm::dot(s.geometricNormal, view) < 0.0 ? -s.geometricNormal : s.geometricNormal;
-        glm::dvec3 n = glm::dot(s.shadingNormal, view) < 0.0 ? -s.shadingNormal : s.shadingNormal;
+        // The side comes from the unmapped shading normal (a map never flips it); maps bend the
+        // normal as it points, and the result is turned with the side.
+        double side = glm::dot(s.shadingNormal, view) < 0.0 ? -1.0 : 1.0;
+        glm::dvec3 smoothN = side * s.shadingNormal;
+        glm::dvec3 n = side * mappedNormal(scene, s, m);
         glm::dvec3 color = surfaceColor(scene, m, s.uv);
-        radiance += pending.weight *
-                    directLight(scene, s, ng, n, view, color, m, sample, pending.depth, rays);
+        radiance += pending.weight * directLight(scene, s, ng, smoothN, n, view, color, m, sample,
+                                                 pending.depth, rays);
         if (pending.depth >= maxDepth)
             continue;
         uint32_t childDepth = pending.depth + 1u;

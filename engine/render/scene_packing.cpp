@@ -40,13 +40,14 @@ PackedScene packScene(const Scene &scene, const Grid &grid) {
             {glm::vec4(p.normal, float(glm::dot(glm::dvec3(p.normal), p.point))),
              glm::vec4(glm::vec3(p.point), indexAsFloat(p.material))});
 
-    // The tracer reads shading data for every triangle hit where the scene has vertex normals or
-    // textures (tracer_features.h): then every triangle has its record.
+    // The tracer reads shading data for every triangle hit where the scene has vertex normals,
+    // textures or normal/bump maps (tracer_features.h): then every triangle has its record.
     bool needShading = false;
     for (const Triangle &t : scene.triangles)
         needShading = needShading || t.hasNormals || t.hasUVs;
     for (const Material &m : scene.materials)
-        needShading = needShading || (m.texture != kNoTexture && !scene.triangles.empty());
+        needShading = needShading ||
+                      ((m.texture != kNoTexture || m.hasSurfaceMaps()) && !scene.triangles.empty());
     for (const Triangle &t : scene.triangles) {
         packed.triangles.push_back({glm::vec4(t.p[0], indexAsFloat(t.material)),
                                     glm::vec4(t.p[1], 0.0f), glm::vec4(t.p[2], 0.0f)});
@@ -61,7 +62,9 @@ PackedScene packScene(const Scene &scene, const Grid &grid) {
         packed.materials.push_back(
             {glm::vec4(m.color, m.ambient),
              glm::vec4(m.diffuse, m.specular, m.shininess, m.reflect),
-             glm::vec4(m.transmit, m.ior, static_cast<float>(m.texture), 0.0f)});
+             glm::vec4(m.transmit, m.ior, static_cast<float>(m.texture), 0.0f),
+             glm::vec4(static_cast<float>(m.normalMap), static_cast<float>(m.bumpMap), m.bumpScale,
+                       0.0f)});
     for (const Light &l : scene.lights)
         packed.lights.push_back({glm::vec4(l.position, l.radius), glm::vec4(l.color, 1.0f)});
 

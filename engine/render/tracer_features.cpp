@@ -24,6 +24,7 @@ TracerFeatures featuresOf(const Scene &scene) {
     f.reflection = used([](const Material &m) { return m.reflect > 0.0f; });
     f.transmission = used([](const Material &m) { return m.transmit > 0.0f; });
     f.textures = used([](const Material &m) { return m.texture != kNoTexture; });
+    f.surfaceMaps = used([](const Material &m) { return m.hasSurfaceMaps(); });
     f.environment = scene.environment.texture != kNoTexture;
     f.areaLights = std::any_of(scene.lights.begin(), scene.lights.end(),
                                [](const Light &l) { return l.radius > 0.0f; });
@@ -70,6 +71,7 @@ std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
             {gpu::kSpecStackSize, stackSize},
             {gpu::kSpecTexelBuffers, texelBuffers},
             {gpu::kSpecAdaptiveGrid, adaptiveGrid},
+            {gpu::kSpecHasSurfaceMaps, surfaceMaps},
             {gpu::kSpecProfileWalkDetail, profile >= 2},
             {gpu::kSpecResumable, resumable},
             {gpu::kSpecResumeLaneBudget,

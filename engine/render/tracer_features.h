@@ -48,6 +48,7 @@ struct TracerFeatures {
     bool textures = false;
     bool areaLights = false;
     bool vertexNormals = false;
+    bool surfaceMaps = false; // normal or bump maps
     bool environment = false;
     bool shadows = true;
     bool writeAov = false;

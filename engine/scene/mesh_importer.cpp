@@ -226,16 +226,24 @@ uint32_t MeshImporter::sceneMaterial(const LoadedLibrary &library, const MtlMate
         return found->second;
 
     Material material = materialFromMtl(mtl, request.objName + ":" + mtl.name);
-    if (!mtl.texturePath.empty()) {
+    // An image that cannot be read is a warning at its MTL line, as a texture always was: the
+    // material is still usable without it.
+    auto loadMap = [&](const std::string &path, int line, TexelMeaning meaning) {
+        if (path.empty())
+            return kNoTexture;
         try {
-            material.texture =
-                textures.load(resolveInputPath(library.path.parent_path(), mtl.texturePath), scene);
+            return textures.load(resolveInputPath(library.path.parent_path(), path), scene,
+                                 meaning);
         } catch (const Error &e) {
-            scene.warnings.push_back(warningAt(library.display, mtl.textureLine,
+            scene.warnings.push_back(warningAt(library.display, line,
                                                std::string(e.what()) + "; material '" + mtl.name +
                                                    "' is used without it"));
+            return kNoTexture;
         }
-    }
+    };
+    material.texture = loadMap(mtl.texturePath, mtl.textureLine, TexelMeaning::Colour);
+    material.bumpMap = loadMap(mtl.bumpPath, mtl.bumpLine, TexelMeaning::Data);
+    material.normalMap = loadMap(mtl.normalPath, mtl.normalLine, TexelMeaning::Data);
     scene.materials.push_back(std::move(material));
     uint32_t index = uint32_t(scene.materials.size() - 1);
     materialsByKey_.emplace(std::move(key), index);

@@ -35,8 +35,9 @@ std::string formatted(glm::vec3 v) {
 // Parses one MTL statement into `material`; returns a warning, or "" when all is well.
 class MtlStatementParser {
 public:
-    MtlStatementParser(std::string_view line, const std::vector<std::string_view> &words)
-        : line_(line), words_(words), keyword_(lowerCase(words[0])) {}
+    MtlStatementParser(std::string_view line, const std::vector<std::string_view> &words,
+                       int lineNumber)
+        : line_(line), words_(words), keyword_(lowerCase(words[0])), lineNumber_(lineNumber) {}
 
     std::string apply(MtlMaterial &material) const {
         if (keyword_ == "kd" || keyword_ == "ks") {
@@ -64,6 +65,14 @@ public:
             (keyword_ == "d" ? material.d : material.tr) = value;
         } else if (keyword_ == "map_kd") {
             material.texturePath = texturePath();
+            material.textureLine = lineNumber_;
+        } else if (keyword_ == "bump" || keyword_ == "map_bump") {
+            material.bumpScale = bumpMultiplier();
+            material.bumpPath = texturePath();
+            material.bumpLine = lineNumber_;
+        } else if (keyword_ == "norm") {
+            material.normalPath = texturePath();
+            material.normalLine = lineNumber_;
         }
         return "";
     }
@@ -101,9 +110,22 @@ private:
         return path;
     }
 
+    // `-bm MULT` among a bump map's options (1 without); the file must still follow it.
+    float bumpMultiplier() const {
+        for (size_t i = 1; i < words_.size(); ++i) {
+            if (lowerCase(words_[i]) != "-bm")
+                continue;
+            if (i + 2 >= words_.size())
+                throw LineError("'-bm' needs a number and then the bump map's file");
+            return mtlNumber(words_[i + 1]);
+        }
+        return 1.0f;
+    }
+
     std::string_view line_;
     const std::vector<std::string_view> &words_;
     std::string keyword_;
+    int lineNumber_;
 };
 
 } // namespace
@@ -142,11 +164,10 @@ MtlLibrary parseMtl(std::string_view text, const std::string &fileName,
             if (library.materials.empty())
                 continue; // statements before the first newmtl belong to no material
             MtlMaterial &material = library.materials.back();
-            std::string warning = MtlStatementParser(line, words).apply(material);
+            std::string warning =
+                MtlStatementParser(line, words, lines.lineNumber()).apply(material);
             if (!warning.empty())
                 warn(warning);
-            else if (lowerCase(words[0]) == "map_kd")
-                material.textureLine = lines.lineNumber();
         } catch (const LineError &e) {
             throw FileError(fileName, lines.lineNumber(), e.what());
         }
@@ -169,6 +190,7 @@ Material materialFromMtl(const MtlMaterial &mtl, std::string sceneName) {
         material.transmit = *mtl.tr;
     else if (mtl.d)
         material.transmit = 1.0f - *mtl.d;
+    material.bumpScale = mtl.bumpScale;
     return material;
 }
 

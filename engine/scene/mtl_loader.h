@@ -1,7 +1,8 @@
 #pragma once
 // Wavefront MTL reader for the statements a Whitted tracer can use. Mapping to a scene
 // material: Kd -> color, mean of Ks -> specular, Ns -> shininess, Ni -> ior,
-// Tr -> transmit, else 1 - d -> transmit, map_Kd -> texture. Everything else is ignored.
+// Tr -> transmit, else 1 - d -> transmit, map_Kd -> texture, bump/map_Bump (with -bm) -> bump
+// map, norm -> normal map. Everything else is ignored.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -24,6 +25,11 @@ struct MtlMaterial {
     std::optional<float> d;
     std::string texturePath; // map_Kd as written, backslashes turned into '/'; empty if none
     int textureLine = 0;
+    std::string bumpPath; // bump or map_Bump, likewise
+    int bumpLine = 0;
+    float bumpScale = 1.0f; // its -bm
+    std::string normalPath; // norm, likewise
+    int normalLine = 0;
 };
 
 struct MtlLibrary {
@@ -40,7 +46,7 @@ MtlLibrary parseMtl(std::string_view text, const std::string &fileName,
                     std::vector<std::string> &warnings);
 
 // The scene material for an MTL material: scene-material defaults where the MTL says nothing.
-// The texture is left to the caller (it must be loaded first).
+// The texture and maps are left to the caller (they must be loaded first).
 Material materialFromMtl(const MtlMaterial &mtl, std::string sceneName);
 
 } // namespace prism

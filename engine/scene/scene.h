@@ -26,12 +26,13 @@ struct Light {
     float radius = 0.0f; // > 0: spherical area light (soft shadows)
 };
 
-// Linear-radiance RGBA texels, row 0 = the image's top row (as stored on disk).
+// RGBA texels, row 0 = the image's top row (as stored on disk): linear radiance for colour
+// textures, the stored values scaled to [0, 1] for data (normal and bump maps).
 struct Texture {
     std::string path;
     int width = 0;
     int height = 0;
-    std::vector<glm::vec4> texels; // width * height, already decoded from sRGB where 8-bit
+    std::vector<glm::vec4> texels; // width * height; colour already decoded from sRGB where 8-bit
 };
 
 constexpr int32_t kNoTexture = -1;
@@ -47,6 +48,13 @@ struct Material {
     float transmit = 0.0f;
     float ior = 1.5f;
     int32_t texture = kNoTexture; // index into Scene::textures
+    // Shading-normal maps (docs/scene-format.md, "Normal and bump maps"), indices into
+    // Scene::textures of images read as data, not colour: a tangent-space normal map, and a
+    // height map whose slope, times bumpScale, tilts the normal (Blinn 1978).
+    int32_t normalMap = kNoTexture;
+    int32_t bumpMap = kNoTexture;
+    float bumpScale = 1.0f; // MTL -bm; heights in texture-coordinate units
+    bool hasSurfaceMaps() const { return normalMap != kNoTexture || bumpMap != kNoTexture; }
 };
 
 // What rays that miss everything see instead of the background: a lat-long image

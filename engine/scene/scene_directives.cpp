@@ -165,6 +165,11 @@ void light(SceneBuilder &builder, const DirectiveArgs &args) {
     builder.scene.lights.push_back(light);
 }
 
+int32_t loadTexture(SceneBuilder &builder, const KeyedValues &kv, TexelMeaning meaning) {
+    return builder.textures.load(resolveInputPath(builder.baseDir, kv.values[0]->text),
+                                 builder.scene, meaning);
+}
+
 void material(SceneBuilder &builder, const DirectiveArgs &args) {
     const std::string &name = args.positional[0]->text;
     if (auto earlier = builder.materialLine.find(name); earlier != builder.materialLine.end())
@@ -193,9 +198,16 @@ void material(SceneBuilder &builder, const DirectiveArgs &args) {
             if (!(m.ior > 0.0f))
                 throw LineError("'ior' must be > 0, got " + formatNumber(m.ior));
         } else if (kv.key == "texture")
-            m.texture = builder.textures.load(resolveInputPath(builder.baseDir, kv.values[0]->text),
-                                              builder.scene);
+            m.texture = loadTexture(builder, kv, TexelMeaning::Colour);
+        else if (kv.key == "norm")
+            m.normalMap = loadTexture(builder, kv, TexelMeaning::Data);
+        else if (kv.key == "bump")
+            m.bumpMap = loadTexture(builder, kv, TexelMeaning::Data);
+        else if (kv.key == "bm")
+            m.bumpScale = number(kv.values[0]);
     }
+    if (args.find("bm") && m.bumpMap == kNoTexture)
+        throw LineError("'bm' scales a bump map: it needs 'bump PATH' on the same line");
     builder.scene.materials.push_back(std::move(m));
     uint32_t index = uint32_t(builder.scene.materials.size() - 1);
     builder.materialByName[name] = index;
@@ -344,7 +356,7 @@ const std::map<std::string_view, Directive> &directives() {
         {"material",
          {{"material",
            "material NAME [color R G B] [ambient K] [diffuse K] [specular K] [shininess N] "
-           "[reflect K] [transmit K] [ior N] [texture PATH]",
+           "[reflect K] [transmit K] [ior N] [texture PATH] [norm PATH] [bump PATH] [bm K]",
            1,
            1,
            {{"color", 3},
@@ -355,7 +367,10 @@ const std::map<std::string_view, Directive> &directives() {
             {"reflect", 1},
             {"transmit", 1},
             {"ior", 1},
-            {"texture", 1}}},
+            {"texture", 1},
+            {"norm", 1},
+            {"bump", 1},
+            {"bm", 1}}},
           material}},
         {"use", {{"use", "use NAME", 1, 1, {}}, use}},
         {"sphere", {{"sphere", "sphere X Y Z RADIUS [NAME]", 4, 5, {}}, sphere}},

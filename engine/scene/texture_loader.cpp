@@ -65,7 +65,7 @@ float srgbToLinear(float encoded) {
     return float(srgbEotf(encoded));
 }
 
-Texture readTexture(const std::filesystem::path &path) {
+Texture readTexture(const std::filesystem::path &path, TexelMeaning meaning) {
     // Keep straight (unassociated) alpha: colour must not come back premultiplied.
     OIIO::ImageSpec hints;
     hints.attribute("oiio:UnassociatedAlpha", 1);
@@ -89,6 +89,7 @@ Texture readTexture(const std::filesystem::path &path) {
     int channels = spec.nchannels;
     size_t values = size_t(spec.width) * size_t(spec.height) * size_t(channels);
     bool read = false;
+    bool colour = meaning == TexelMeaning::Colour;
     if (isFloatFormat(spec.format)) {
         std::vector<float> pixels(values);
         read = in->read_image(0, 0, 0, channels, OIIO::TypeFloat, pixels.data());
@@ -100,14 +101,18 @@ Texture readTexture(const std::filesystem::path &path) {
         read = in->read_image(0, 0, 0, channels, OIIO::TypeUInt8, pixels.data());
         if (read)
             toRgba(
-                pixels, channels, [](uint8_t v) { return srgb8ToLinear()[v]; },
+                pixels, channels,
+                [colour](uint8_t v) { return colour ? srgb8ToLinear()[v] : float(v) / 255.0f; },
                 [](uint8_t v) { return float(v) / 255.0f; }, texture);
     } else {
         std::vector<uint16_t> pixels(values);
         read = in->read_image(0, 0, 0, channels, OIIO::TypeUInt16, pixels.data());
         if (read)
             toRgba(
-                pixels, channels, [](uint16_t v) { return float(srgbEotf(v / 65535.0)); },
+                pixels, channels,
+                [colour](uint16_t v) {
+                    return colour ? float(srgbEotf(v / 65535.0)) : float(v) / 65535.0f;
+                },
                 [](uint16_t v) { return float(v) / 65535.0f; }, texture);
     }
     if (!read)
@@ -116,16 +121,19 @@ Texture readTexture(const std::filesystem::path &path) {
     return texture;
 }
 
-int32_t TextureCache::load(const std::filesystem::path &path, Scene &scene) {
+int32_t TextureCache::load(const std::filesystem::path &path, Scene &scene, TexelMeaning meaning) {
     std::error_code ec;
     std::filesystem::path canonical = std::filesystem::canonical(path, ec);
     if (ec)
         failTexture(path, ec.message());
-    auto [it, inserted] = indexByCanonicalPath_.try_emplace(canonical.string(), kNoTexture);
+    // One file may be a colour texture and a bump map: two decodings, two entries.
+    std::string key =
+        canonical.string() + (meaning == TexelMeaning::Colour ? "\ncolour" : "\ndata");
+    auto [it, inserted] = indexByCanonicalPath_.try_emplace(key, kNoTexture);
     if (!inserted)
         return it->second;
     try {
-        scene.textures.push_back(readTexture(path));
+        scene.textures.push_back(readTexture(path, meaning));
     } catch (...) {
         indexByCanonicalPath_.erase(it);
         throw;

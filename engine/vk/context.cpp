@@ -215,9 +215,6 @@ void Context::createDevice(const ContextOptions &options) {
     if (!supported12.shaderBufferInt64Atomics || !supported.features.shaderInt64)
         throw Error(deviceName() + " lacks 64-bit integer buffer atomics, which the tracer's "
                                    "ray counters need");
-    if (!supported.features.shaderFloat64)
-        throw Error(deviceName() + " lacks 64-bit floats, which the watertight triangle test "
-                                   "needs for its exact fallback");
 
     VkPhysicalDeviceVulkan12Features enabled12{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
@@ -225,7 +222,6 @@ void Context::createDevice(const ContextOptions &options) {
     VkPhysicalDeviceFeatures2 enabled{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     enabled.pNext = &enabled12;
     enabled.features.shaderInt64 = VK_TRUE;
-    enabled.features.shaderFloat64 = VK_TRUE;
     std::vector<const char *> extensions = options.deviceExtensions;
     VkPhysicalDeviceShaderClockFeaturesKHR enabledClock{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_CLOCK_FEATURES_KHR};

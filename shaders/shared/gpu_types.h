@@ -105,6 +105,7 @@ struct GpuMaterial {
     vec4 colorAmbient; // rgb colour, a: ambient coefficient
     vec4 lighting;     // x diffuse, y specular, z shininess, w reflect
     vec4 optics;       // x transmit, y ior, z texture index (-1: none)
+    vec4 maps;         // x normal map index, y bump map index (-1: none), z bump multiplier
 };
 PRISM_INLINE vec3 materialColor(PRISM_IN(GpuMaterial) m) {
     return vec3(m.colorAmbient);
@@ -135,6 +136,21 @@ PRISM_INLINE bool materialHasTexture(PRISM_IN(GpuMaterial) m) {
 }
 PRISM_INLINE uint materialTexture(PRISM_IN(GpuMaterial) m) {
     return uint(m.optics.z);
+}
+PRISM_INLINE bool materialHasNormalMap(PRISM_IN(GpuMaterial) m) {
+    return m.maps.x >= 0.0f;
+}
+PRISM_INLINE uint materialNormalMap(PRISM_IN(GpuMaterial) m) {
+    return uint(m.maps.x);
+}
+PRISM_INLINE bool materialHasBumpMap(PRISM_IN(GpuMaterial) m) {
+    return m.maps.y >= 0.0f;
+}
+PRISM_INLINE uint materialBumpMap(PRISM_IN(GpuMaterial) m) {
+    return uint(m.maps.y);
+}
+PRISM_INLINE float materialBumpScale(PRISM_IN(GpuMaterial) m) {
+    return m.maps.z;
 }
 
 struct GpuLight {
@@ -243,8 +259,9 @@ static_assert(sizeof(GpuPlane) == 32);
 static_assert(sizeof(GpuTriangle) == 48);
 static_assert(sizeof(GpuTriangleShading) == 80);
 static_assert(offsetof(GpuTriangleShading, uv01) == 48);
-static_assert(sizeof(GpuMaterial) == 48);
+static_assert(sizeof(GpuMaterial) == 64);
 static_assert(offsetof(GpuMaterial, optics) == 32);
+static_assert(offsetof(GpuMaterial, maps) == 48);
 static_assert(sizeof(GpuLight) == 32);
 static_assert(sizeof(GpuTexture) == 16);
 static_assert(sizeof(GpuStats) == 128);

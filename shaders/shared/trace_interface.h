@@ -53,7 +53,8 @@ PRISM_CONST(uint, kSpecWriteAov, 7u);
 PRISM_CONST(uint, kSpecHasEnvironment, 8u); // misses see Scene::environment, not the background
 PRISM_CONST(uint, kSpecStackSize, 9u);      // 2 * maxDepth - 1
 PRISM_CONST(uint, kSpecTexelBuffers, 10u);
-PRISM_CONST(uint, kSpecAdaptiveGrid, 11u); // walk the adaptive grid's cells, not a regular DDA
+PRISM_CONST(uint, kSpecAdaptiveGrid, 11u);   // walk the adaptive grid's cells, not a regular DDA
+PRISM_CONST(uint, kSpecHasSurfaceMaps, 12u); // some material has a normal or bump map
 // For the studies only (docs/studies, prism-bench variants): the methods Prism replaced, so that
 // where they fail can be measured. At their defaults they fold away to Prism's own methods.
 PRISM_CONST(uint, kSpecFixedRayOffset, 13u);    // float: 0 = relative offset; > 0: fixed, in units

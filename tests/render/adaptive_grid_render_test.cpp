@@ -52,7 +52,7 @@ TEST_P(AdaptiveGridRender, MatchesTheRegularGrid) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedScenes, AdaptiveGridRender, ::testing::ValuesIn(shippedScenes()),
-                         [](const auto &info) { return info.param; });
+                         [](const auto &info) { return testNameOf(info.param); });
 
 class AdaptiveGridCluster : public GpuTest {
 protected:

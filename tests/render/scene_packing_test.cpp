@@ -24,6 +24,9 @@ TEST(ScenePacking, CarriesEveryArrayAndIndex) {
     texture.texels = {glm::vec4(1.0f), glm::vec4(0.5f)};
     scene.textures = {texture, texture};
     scene.materials[2].texture = 1;
+    scene.materials[2].normalMap = 0;
+    scene.materials[3].bumpMap = 1;
+    scene.materials[3].bumpScale = -0.25f;
     Grid grid = buildGrid(scene, {});
     PackedScene packed = packScene(scene, grid);
 
@@ -49,6 +52,15 @@ TEST(ScenePacking, CarriesEveryArrayAndIndex) {
     EXPECT_TRUE(gpu::materialHasTexture(m));
     EXPECT_EQ(gpu::materialTexture(m), 1u);
     EXPECT_FALSE(gpu::materialHasTexture(packed.materials[1]));
+    EXPECT_TRUE(gpu::materialHasNormalMap(m));
+    EXPECT_EQ(gpu::materialNormalMap(m), 0u);
+    EXPECT_FALSE(gpu::materialHasBumpMap(m));
+    const gpu::GpuMaterial &bumpy = packed.materials[3];
+    EXPECT_FALSE(gpu::materialHasNormalMap(bumpy));
+    EXPECT_TRUE(gpu::materialHasBumpMap(bumpy));
+    EXPECT_EQ(gpu::materialBumpMap(bumpy), 1u);
+    EXPECT_EQ(gpu::materialBumpScale(bumpy), -0.25f);
+    EXPECT_EQ(gpu::materialBumpScale(packed.materials[1]), 1.0f);
     EXPECT_EQ(gpu::lightPosition(packed.lights[0]), glm::vec3(scene.lights[0].position));
     EXPECT_EQ(gpu::lightRadius(packed.lights[0]), scene.lights[0].radius);
     EXPECT_EQ(gpu::lightColor(packed.lights[0]), scene.lights[0].color);
@@ -108,11 +120,17 @@ TEST(TracerFeatures, FollowTheScene) {
     TracerFeatures f = featuresOf(scene);
     EXPECT_TRUE(f.has(gpu::kKindSphere) && f.has(gpu::kKindPlane) && f.has(gpu::kKindTriangle));
     EXPECT_TRUE(f.reflection && f.transmission);
-    EXPECT_FALSE(f.textures || f.areaLights || f.vertexNormals || f.environment);
+    EXPECT_FALSE(f.textures || f.areaLights || f.vertexNormals || f.environment || f.surfaceMaps);
     scene.textures.push_back(Texture{"sky", 1, 1, {glm::vec4(1.0f)}});
     scene.environment.texture = 0;
     EXPECT_TRUE(featuresOf(scene).environment);
     EXPECT_FALSE(featuresOf(scene).textures) << "no material uses it";
+    scene.materials[1].bumpMap = 0;
+    EXPECT_TRUE(featuresOf(scene).surfaceMaps);
+    EXPECT_FALSE(featuresOf(scene).textures) << "a bump map is not a colour texture";
+    scene.materials[1].bumpMap = kNoTexture;
+    scene.materials[2].normalMap = 0;
+    EXPECT_TRUE(featuresOf(scene).surfaceMaps);
     scene.materials[3].transmit = 0.0f;
     EXPECT_FALSE(featuresOf(scene).transmission);
     f.maxDepth = 5;
@@ -120,7 +138,7 @@ TEST(TracerFeatures, FollowTheScene) {
     std::map<uint32_t, uint32_t> constants;
     for (vk::SpecializationConstant c : f.specialization())
         EXPECT_TRUE(constants.emplace(c.id, c.value).second) << "constant_id " << c.id << " twice";
-    EXPECT_EQ(constants.size(), 17u); // every constant_id of shared/trace_interface.h
+    EXPECT_EQ(constants.size(), 18u); // every constant_id of shared/trace_interface.h
     EXPECT_EQ(constants.at(gpu::kSpecAdaptiveGrid), 0u);
     EXPECT_EQ(constants.at(gpu::kSpecResumable), 0u) << "resumable only after a cut";
     EXPECT_EQ(constants.at(gpu::kSpecResumeLaneBudget), gpu::kResumeLaneBudget);
@@ -129,6 +147,7 @@ TEST(TracerFeatures, FollowTheScene) {
     EXPECT_EQ(constants.at(gpu::kSpecStackSize), 9u) << "stack holds 2 * depth - 1 rays";
     EXPECT_EQ(constants.at(gpu::kSpecTexelBuffers), 1u) << "texel-buffer reads";
     EXPECT_EQ(constants.at(gpu::kSpecHasTextures), 0u);
+    EXPECT_EQ(constants.at(gpu::kSpecHasSurfaceMaps), 0u);
     EXPECT_EQ(constants.at(gpu::kSpecHasTransmission), 1u);
     EXPECT_EQ(constants.at(gpu::kSpecFixedRayOffset), 0u) << "Prism's relative offset";
     EXPECT_EQ(constants.at(gpu::kSpecTriangleTest), gpu::kTriangleTestWatertight);

@@ -60,7 +60,7 @@ TEST_P(SceneRegression, ShaderMatchesCpuReference) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedScenes, SceneRegression, ::testing::ValuesIn(shippedScenes()),
-                         [](const auto &info) { return info.param; });
+                         [](const auto &info) { return testNameOf(info.param); });
 
 } // namespace
 } // namespace prism::test

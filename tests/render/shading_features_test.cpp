@@ -4,10 +4,9 @@
 // texture axes and three vertex-normal bugs passed every other test; texture filtering was
 // caught by one scene only (showcase, where the textured cow is a small part of the image).
 //
-// Tolerance as in the scene regression test, from a measurement (2026-12-01, these scenes at
-// 64x48): the largest difference to the reference is 0.000002 and the mean under 0.0000001.
-// As there, 2 pixels may flip on another CPU's float rounding; a third, or a mean over 0.001,
-// fails. Each of those seeded bugs changes 236 to 3072 of the 3072 pixels here.
+// Tolerance as in the scene regression test (reference_match.h), from a measurement
+// (2026-12-01, these scenes at 64x48): the largest difference to the reference is 0.000002 and
+// the mean under 0.0000001. Each of those seeded bugs changes 236 to 3072 of the 3072 pixels.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -15,30 +14,17 @@
 #include <gtest/gtest.h>
 
 #include "gpu_fixture.h"
-#include "image_compare.h"
+#include "reference_match.h"
 #include "render_helpers.h"
 #include "scene_builders.h"
 
 namespace prism::test {
 namespace {
 
-constexpr double kPixelThreshold = 0.02;
-constexpr size_t kMaxDifferingPixels = 2;
-constexpr double kMaxMeanAbsolute = 0.001;
-constexpr uint32_t kWidth = 64, kHeight = 48;
-
 class ShadingFeatures : public GpuTest {
 protected:
-    // The shader's image of `scene`, checked against the reference's.
-    std::vector<float> expectMatchesReference(const Scene &scene, uint32_t spp = 1) {
-        GpuRender gpu = renderGpu(context(), scene, kWidth, kHeight, spp);
-        std::vector<float> cpu = renderCpu(scene, kWidth, kHeight, spp);
-        ImageDifference d = compareImages(gpu.image.rgba, cpu, kPixelThreshold);
-        EXPECT_EQ(gpu.frame.loopCutPixels, 0u);
-        EXPECT_EQ(d.nonFinite, 0u);
-        EXPECT_LE(d.differing, kMaxDifferingPixels) << describe(d);
-        EXPECT_LE(d.meanAbsolute, kMaxMeanAbsolute) << describe(d);
-        return gpu.image.rgba;
+    std::vector<float> expectMatchesReference(const Scene &scene) {
+        return test::expectMatchesReference(context(), scene);
     }
 };
 
@@ -85,7 +71,7 @@ TEST_F(ShadingFeatures, PlaneBetweenALightAndASurfaceCastsAShadow) {
     scene.lights.push_back(Light{{0.0f, 3.0f, -5.0f}, {0.8f, 0.8f, 0.8f}, 0.0f});
     std::vector<float> both = expectMatchesReference(scene);
     // The hidden light adds nothing anywhere: the same image to the bit.
-    EXPECT_EQ(both, renderGpu(context(), frontLightOnly, kWidth, kHeight).image.rgba);
+    EXPECT_EQ(both, renderGpu(context(), frontLightOnly, kMatchWidth, kMatchHeight).image.rgba);
 }
 
 // A textured floor seen from above, magnified: one texel spans 6x6 pixels, so bilinear
@@ -100,22 +86,6 @@ TEST_F(ShadingFeatures, TexturedPlaneMagnified) {
     scene.camera.up = {0.0f, 0.0f, -1.0f};
     scene.camera.orthoHeight = 1.0f; // 48 pixels per unit, 8 texels per unit
     expectMatchesReference(scene);
-}
-
-// Adds a regular octahedron shaded as a sphere: vertex normals point away from the centre
-// (0.58 from the faces' own), and texture coordinates run around it.
-void addSmoothOctahedron(Scene &scene, glm::vec3 center, float radius, uint32_t material) {
-    size_t first = scene.triangles.size();
-    addOctahedron(scene, center, radius, material);
-    for (size_t i = first; i < scene.triangles.size(); ++i) {
-        Triangle &t = scene.triangles[i];
-        t.hasNormals = t.hasUVs = true;
-        for (int c = 0; c < 3; ++c) {
-            glm::vec3 n = glm::normalize(glm::vec3(t.p[c]) - center);
-            t.n[c] = n;
-            t.uv[c] = {0.5f + 0.4f * n.x + 0.1f * n.z, 0.5f + 0.4f * n.y - 0.1f * n.z};
-        }
-    }
 }
 
 // Smooth shading: diffuse, highlight and mirror ray all follow the interpolated normal.

@@ -202,6 +202,34 @@ TEST(MeshImporter, MtlTexturesResolveAgainstTheMtlFileAndLoadOnce) {
     EXPECT_EQ(scene.textures[0].texels[0], glm::vec4(1, 0, 0, 1));
 }
 
+// Normal and bump maps are data: the same file as a colour texture is a second texture, not
+// sRGB-decoded. An image that cannot be read is a warning at its MTL line, as for map_Kd.
+TEST(MeshImporter, MtlBumpAndNormalMapsLoadAsDataWithWarningsAtTheirLine) {
+    TempDir dir;
+    writePng(dir.path() / "t.png", 1, 1, 3, {128, 128, 255});
+    dir.write("m.mtl", "newmtl bumpy\nmap_Kd t.png\nbump -bm 0.25 t.png\nnorm missing.png\n"
+                       "newmtl normal\nnorm t.png\n");
+    dir.write("m.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                       "usemtl bumpy\nf 1 2 3\nusemtl normal\nf 1 2 3\n");
+    std::string mtl = (dir.path() / "m.mtl").string();
+    Scene scene = loadScene(dir.write("s.scene", "mesh m.obj\n"));
+    ASSERT_EQ(scene.warnings.size(), 1u) << allWarnings(scene);
+    EXPECT_TRUE(hasWarning(scene, mtl + ":4: warning: cannot read texture '",
+                           "material 'bumpy' is used without it"))
+        << allWarnings(scene);
+    ASSERT_EQ(scene.textures.size(), 2u);
+    const Material &bumpy = scene.materials[scene.triangles[0].material];
+    const Material &normal = scene.materials[scene.triangles[1].material];
+    EXPECT_EQ(bumpy.bumpScale, 0.25f);
+    EXPECT_EQ(bumpy.normalMap, kNoTexture);
+    EXPECT_NE(bumpy.bumpMap, bumpy.texture);
+    EXPECT_EQ(normal.normalMap, bumpy.bumpMap); // one data copy of t.png
+    glm::vec4 data = scene.textures[size_t(bumpy.bumpMap)].texels[0];
+    EXPECT_EQ(data, glm::vec4(128 / 255.0f, 128 / 255.0f, 1.0f, 1.0f));
+    glm::vec4 colour = scene.textures[size_t(bumpy.texture)].texels[0];
+    EXPECT_NEAR(colour.x, 0.2158605f, 1e-6f); // sRGB 128 decoded
+}
+
 TEST(MeshImporter, MtllibMayNameSeveralFilesOrOneWithSpaces) {
     TempDir dir;
     dir.write("a.mtl", "newmtl a\nKd 1 0 0\n");

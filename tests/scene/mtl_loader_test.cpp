@@ -64,6 +64,45 @@ TEST(MtlLoader, TexturePathsWindowsStyleWithOptionsAndWithSpaces) {
     EXPECT_EQ(lib.materials[2].texturePath, "my tex.png");
 }
 
+// bump / map_Bump (height, -bm its multiplier) and norm (tangent-space normals), each with its
+// line for a warning about the image; the multiplier carries over to the scene material.
+TEST(MtlLoader, BumpAndNormalMaps) {
+    MtlLibrary lib =
+        parse("newmtl a\nbump h.png\nnorm n.png\nnewmtl b\n"
+              "map_Bump -bm 0.5 sub\\h.png\nnewmtl c\nMAP_BUMP -clamp on -BM -2 h.png\n"
+              "newmtl d\nmap_Kd d.png\n");
+    ASSERT_EQ(lib.materials.size(), 4u);
+    const MtlMaterial &a = lib.materials[0], &b = lib.materials[1], &c = lib.materials[2];
+    EXPECT_EQ(a.bumpPath, "h.png");
+    EXPECT_EQ(a.bumpLine, 2);
+    EXPECT_EQ(a.bumpScale, 1.0f);
+    EXPECT_EQ(a.normalPath, "n.png");
+    EXPECT_EQ(a.normalLine, 3);
+    EXPECT_EQ(b.bumpPath, "sub/h.png");
+    EXPECT_EQ(b.bumpLine, 5);
+    EXPECT_EQ(b.bumpScale, 0.5f);
+    EXPECT_EQ(materialFromMtl(b, "b").bumpScale, 0.5f);
+    EXPECT_EQ(c.bumpPath, "h.png");
+    EXPECT_EQ(c.bumpScale, -2.0f); // a negative multiplier turns bumps into dents
+    EXPECT_TRUE(c.normalPath.empty());
+    EXPECT_TRUE(lib.materials[3].bumpPath.empty()); // map_Kd is no bump map
+    Material plain = materialFromMtl(lib.materials[3], "d");
+    EXPECT_EQ(plain.bumpScale, 1.0f);
+    EXPECT_FALSE(plain.hasSurfaceMaps()); // the caller loads the images
+}
+
+TEST(MtlLoader, BadBumpMultipliersAndMissingFilesAreErrorsAtTheirLine) {
+    std::vector<std::string> warnings;
+    test::expectFileError([&] { parseMtl("newmtl a\nbump -bm x h.png\n", "lib.mtl", warnings); },
+                          "lib.mtl", 2, "bad number 'x'");
+    test::expectFileError([&] { parseMtl("newmtl a\n\nbump -bm 0.5\n", "lib.mtl", warnings); },
+                          "lib.mtl", 3, "'-bm' needs a number and then the bump map's file");
+    test::expectFileError([&] { parseMtl("newmtl a\nnorm\n", "lib.mtl", warnings); }, "lib.mtl", 2,
+                          "'norm' needs a value");
+    test::expectFileError([&] { parseMtl("newmtl a\nmap_Bump\n", "lib.mtl", warnings); }, "lib.mtl",
+                          2, "'map_Bump' needs a value");
+}
+
 TEST(MtlLoader, CrlfCommentsAndNoFinalNewline) {
     MtlLibrary lib = parse("# c\r\nnewmtl leftWall\r\n  Ka 0.63 0.065 0.05 # Red\r\n"
                            "  Kd 0.63 0.065 0.05\r\nnewmtl last\r\nKd 1 1 1");

@@ -103,6 +103,10 @@ TEST(SceneErrors, MaterialNamesAndValues) {
         expectError(std::string("material m ") + key + " -0.5\n", 1,
                     std::string("'") + key + "' must not be negative, got -0.5");
     expectError("material m color 1 -1 0\n", 1, "'color' must not be negative, got 1 -1 0");
+    expectError("\nmaterial m bm 0.5\n", 2,
+                "'bm' scales a bump map: it needs 'bump PATH' on the same line");
+    expectError("material m bm x bump h.png\n", 1, "bad number 'x'");
+    expectError("material m bump\n", 1, "'bump' needs 1 value");
 }
 
 TEST(SceneErrors, NegativeColoursAndRadiusElsewhere) {
@@ -155,6 +159,10 @@ TEST(SceneErrors, UnreadableFilesAreErrorsOfTheLineThatNamesThem) {
     expectFileError([&] { loadScene(scene); }, scene, 1, "it is a directory");
     dir.write("s.scene", "\nmaterial m texture missing.png\n");
     expectFileError([&] { loadScene(scene); }, scene, 2, "cannot read texture '");
+    dir.write("s.scene", "sphere 0 0 0 1\nmaterial m norm missing.png\n");
+    expectFileError([&] { loadScene(scene); }, scene, 2, "cannot read texture '");
+    dir.write("s.scene", "\n\nmaterial m bump missing.png bm 2\n");
+    expectFileError([&] { loadScene(scene); }, scene, 3, "missing.png");
     dir.write("not-an-image.png", "this is text");
     dir.write("s.scene", "material m texture not-an-image.png\n");
     expectFileError([&] { loadScene(scene); }, scene, 1, "not-an-image.png");

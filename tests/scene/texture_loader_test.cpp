@@ -156,6 +156,30 @@ TEST(TextureCache, MaterialLinesShareTexturesAndAcceptQuotedPaths) {
     EXPECT_EQ(scene.textures[0].texels[1], glm::vec4(0, 0, 0, 1));
 }
 
+// Normal and bump maps are data: 8-bit values are only scaled to [0, 1] (a normal map's 128
+// must stay 128/255, not become 0.216), so a file used for colour and for data is two textures.
+TEST(TextureCache, NormalAndBumpMapsAreDataNotColour) {
+    TempDir dir;
+    writeImage<uint8_t>(dir.path() / "n.png", 1, 1, 3, OIIO::TypeDesc::UINT8, {128, 64, 255});
+    writeImage<uint16_t>(dir.path() / "h.png", 1, 1, 1, OIIO::TypeDesc::UINT16, {32768});
+    Scene scene = loadScene(dir.write("s.scene", "material a texture n.png norm n.png\n"
+                                                 "material b bump h.png bm -0.5 norm ./n.png\n"
+                                                 "material c bump h.png\n"));
+    ASSERT_EQ(scene.textures.size(), 3u);
+    const Material &a = scene.materials[1], &b = scene.materials[2], &c = scene.materials[3];
+    EXPECT_NE(a.texture, a.normalMap);
+    EXPECT_EQ(b.normalMap, a.normalMap);
+    EXPECT_EQ(c.bumpMap, b.bumpMap);
+    EXPECT_EQ(a.bumpMap, kNoTexture);
+    EXPECT_EQ(b.bumpScale, -0.5f);
+    EXPECT_EQ(c.bumpScale, 1.0f);
+    EXPECT_EQ(scene.textures[size_t(a.normalMap)].texels[0],
+              glm::vec4(128 / 255.0f, 64 / 255.0f, 1.0f, 1.0f));
+    EXPECT_EQ(scene.textures[size_t(a.texture)].texels[0].y, eotf(64 / 255.0));
+    EXPECT_EQ(scene.textures[size_t(b.bumpMap)].texels[0],
+              glm::vec4(glm::vec3(32768 / 65535.0f), 1.0f));
+}
+
 // `environment PATH [intensity K] [rotate DEG]`: the image is a texture like any other (an EXR
 // kept linear), shared with materials naming the same file; one environment a scene.
 TEST(Environment, LineLoadsItsImageWithIntensityAndRotation) {

@@ -74,4 +74,20 @@ inline void addOctahedron(Scene &scene, glm::vec3 center, float radius, uint32_t
     addTriangle(scene, px, ny, nz, material);
 }
 
+// Adds a regular octahedron shaded as a sphere: vertex normals point away from the centre
+// (0.58 from the faces' own), and texture coordinates run around it.
+inline void addSmoothOctahedron(Scene &scene, glm::vec3 center, float radius, uint32_t material) {
+    size_t first = scene.triangles.size();
+    addOctahedron(scene, center, radius, material);
+    for (size_t i = first; i < scene.triangles.size(); ++i) {
+        Triangle &t = scene.triangles[i];
+        t.hasNormals = t.hasUVs = true;
+        for (int c = 0; c < 3; ++c) {
+            glm::vec3 n = glm::normalize(glm::vec3(t.p[c]) - center);
+            t.n[c] = n;
+            t.uv[c] = {0.5f + 0.4f * n.x + 0.1f * n.z, 0.5f + 0.4f * n.y - 0.1f * n.z};
+        }
+    }
+}
+
 } // namespace prism::test

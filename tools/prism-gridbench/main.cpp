@@ -6,7 +6,6 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -16,6 +15,7 @@
 #include "accel/walk_counts.h"
 #include "core/error.h"
 #include "core/median.h"
+#include "core/parallel_for.h"
 #include "core/timer.h"
 #include "embree_baseline.h"
 #include "scene/scene_loader.h"
@@ -32,7 +32,26 @@ struct Row {
     double buildMs = 0.0; // median
     std::vector<double> buildsMs;
     std::string choice;
+    std::string digest; // of the grid's arrays: equal digests, byte-identical grids
 };
+
+// FNV-1a (64 bits) over the arrays the tracer reads, in order, to tell whether two builds (two
+// commits, two thread counts) made the same grid.
+std::string gridDigest(const Grid &grid) {
+    uint64_t hash = 14695981039346656037ull;
+    auto add = [&](const void *data, size_t bytes) {
+        const unsigned char *p = static_cast<const unsigned char *>(data);
+        for (size_t i = 0; i < bytes; ++i)
+            hash = (hash ^ p[i]) * 1099511628211ull;
+    };
+    add(grid.cellStart.data(), 4 * grid.cellStart.size());
+    add(grid.cellPrimitives.data(), 4 * grid.cellPrimitives.size());
+    add(grid.entries.data(), 4 * grid.entries.size());
+    add(grid.cellBoxes.data(), 16 * grid.cellBoxes.size());
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", (unsigned long long)hash);
+    return text;
+}
 
 Row measureGrid(const Scene &scene, const std::string &name, const std::string &gridText,
                 uint32_t runs) {
@@ -56,6 +75,7 @@ Row measureGrid(const Scene &scene, const std::string &name, const std::string &
     row.depth = grid.depth;
     row.walk = countWalks(scene, grid, 4.0 / 3.0);
     row.choice = grid.choice;
+    row.digest = gridDigest(grid);
     return row;
 }
 
@@ -80,7 +100,7 @@ std::string number(double value, const char *format) {
 void printTable(const std::vector<Row> &rows, uint32_t runs) {
     std::printf("Build times: median of %u builds, %u threads. cells/ray, tests/ray: the tracer's "
                 "work per primary ray, counted on the CPU (48x36 camera rays).\n\n",
-                runs, std::max(1u, std::thread::hardware_concurrency()));
+                runs, parallelThreadCount());
     std::printf("| scene | primitives | grid | layout | cells | bytes/prim | max/cell | depth | "
                 "cells/ray | tests/ray | build ms | vs Embree |\n"
                 "|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
@@ -108,6 +128,10 @@ void printTable(const std::vector<Row> &rows, uint32_t runs) {
     for (const Row &r : rows)
         if (!r.choice.empty())
             std::printf("%s, auto: %s\n", r.scene.c_str(), r.choice.c_str());
+    for (const Row &r : rows)
+        if (!r.digest.empty())
+            std::printf("%s, %s: arrays' digest %s\n", r.scene.c_str(), r.structure.c_str(),
+                        r.digest.c_str());
 }
 
 nlohmann::json toJson(const Row &r) {
@@ -123,7 +147,8 @@ nlohmann::json toJson(const Row &r) {
             {"tests_per_primary_ray", r.walk.testsPerRay},
             {"build_ms_median", r.buildMs},
             {"build_ms", r.buildsMs},
-            {"choice", r.choice}};
+            {"choice", r.choice},
+            {"digest", r.digest}};
 }
 
 } // namespace
@@ -138,6 +163,7 @@ int main(int argc, char **argv) {
     std::string gridList = "regular,adaptive,auto", jsonPath;
     uint32_t runs = 5;
     bool noEmbree = false;
+    unsigned threads = 0;
     app.add_option("SCENES", scenes, "Scene files")->required()->check(CLI::ExistingFile);
     app.add_option("--grids", gridList,
                    "Comma-separated --grid values to build: auto, regular, adaptive, off, N, "
@@ -146,9 +172,13 @@ int main(int argc, char **argv) {
     app.add_option("--runs", runs, "Builds per grid (the median is reported)")
         ->check(CLI::Range(1u, 1000u))
         ->default_val(runs);
+    app.add_option("--threads", threads,
+                   "Threads for the grid builds (default: one per core; Embree keeps its own)")
+        ->check(CLI::Range(1u, 1024u));
     app.add_flag("--no-embree", noEmbree, "Leave Embree's build out");
     app.add_option("--json", jsonPath, "Also write every result (all build times) as JSON");
     CLI11_PARSE(app, argc, argv);
+    ParallelThreads threadLimit(threads);
     try {
         std::vector<std::string> grids;
         std::stringstream list(gridList);

@@ -1,0 +1,61 @@
+#pragma once
+// Sorting references into the parts of a lattice by the range of parts each one meets: a
+// counting sort into one array (no list per part), stable, so references keep their order
+// within a part. The adaptive grid bins its top cells and every split this way.
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "accel/cell_binner.h"
+
+namespace prism {
+
+// The cells [lo, hi] (inclusive) of a lattice that a primitive's bounding box meets.
+struct CellRange {
+    glm::ivec3 lo, hi;
+    size_t cells() const {
+        glm::ivec3 span = hi - lo + 1;
+        return size_t(span.x) * size_t(span.y) * size_t(span.z);
+    }
+};
+
+// Part p of a lattice lists refs[start[p] .. start[p + 1]).
+struct PartLists {
+    std::vector<uint32_t> start, refs;
+    size_t fullest = 0; // the longest list
+
+    std::span<const uint32_t> list(size_t part) const {
+        return {refs.data() + start[part], start[part + 1] - start[part]};
+    }
+    bool empty(size_t part) const { return start[part + 1] == start[part]; }
+};
+
+// refs[i] goes to every part of `parts` in ranges[i].
+inline PartLists sortIntoParts(const std::vector<CellRange> &ranges, const Lattice &parts,
+                               std::span<const uint32_t> refs) {
+    auto forEachPart = [&](auto visit) {
+        for (size_t i = 0; i < ranges.size(); ++i) {
+            const CellRange &r = ranges[i];
+            for (int z = r.lo.z; z <= r.hi.z; ++z)
+                for (int y = r.lo.y; y <= r.hi.y; ++y)
+                    for (int x = r.lo.x; x <= r.hi.x; ++x)
+                        visit(i, parts.local({x, y, z}));
+        }
+    };
+    PartLists lists;
+    lists.start.assign(size_t(parts.count()) + 1, 0u);
+    forEachPart([&](size_t, uint32_t part) { ++lists.start[part + 1]; });
+    for (size_t part = 0; part < parts.count(); ++part) {
+        lists.fullest = std::max<size_t>(lists.fullest, lists.start[part + 1]);
+        lists.start[part + 1] += lists.start[part];
+    }
+    lists.refs.resize(lists.start.back());
+    std::vector<uint32_t> cursor(lists.start.begin(), lists.start.end() - 1);
+    forEachPart([&](size_t i, uint32_t part) { lists.refs[cursor[part]++] = refs[i]; });
+    return lists;
+}
+
+} // namespace prism
