@@ -186,7 +186,8 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
                     } else {
                         float f0 = (ior - 1.0) / (ior + 1.0);
                         f0 *= f0;
-                        float fresnel = f0 + (1.0 - f0) * pow(max(0.0, 1.0 - cosI), 5.0); // Schlick
+                        float x = max(0.0, 1.0 - cosI);
+                        float fresnel = f0 + (1.0 - f0) * (x * x) * (x * x) * x; // Schlick
                         vec3 refracted = normalize(eta * ray.dir + (eta * cosI - sqrt(k)) * n);
                         pushRay(offsetOrigin(s.position, ng, reflected), reflected,
                                 weight * fresnel, ray.depth + 1u);

@@ -47,8 +47,10 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     f.resumable = options.resumable;
     f.resumeLaneBudget = options.resumeLaneBudget;
     f.shadows = options.shadows;
-    f.reflection = f.reflection && options.reflection;
-    f.transmission = f.transmission && options.transmission;
+    // At depth 1 no ray is ever reflected or refracted: compile that code out too (lavapipe
+    // would otherwise run it, masked, for every hit).
+    f.reflection = f.reflection && options.reflection && options.maxDepth > 1;
+    f.transmission = f.transmission && options.transmission && options.maxDepth > 1;
     if (!std::isfinite(options.fixedRayOffset) || options.fixedRayOffset < 0.0f)
         throw Error("fixed ray offset " + std::to_string(options.fixedRayOffset) +
                     " is not a finite number >= 0 (0: Prism's relative offset)");

@@ -186,3 +186,15 @@ TEST_F(PrismBenchCli, ProfileTimesThePhasesTheSceneHas) {
     EXPECT_EQ(doc["results"][0]["profile"]["phases"]["ns_per_sample"]["secondary_walks"], 0.0);
     EXPECT_GT(doc["results"][1]["profile"]["phases"]["ns_per_sample"]["secondary_walks"], 0.0);
 }
+
+// The resumable variant (the loop-budget tracer from the first frame) traces the same rays.
+TEST_F(PrismBenchCli, ResumableVariantTracesTheSameRays) {
+    fs::path json = dir() / "out.json";
+    CliResult r = bench(scene_.string() + " --size 16x12 --runs 1 --variants auto,auto+resumable " +
+                        "--json " + json.string());
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream(json));
+    ASSERT_EQ(doc["results"].size(), 2u);
+    EXPECT_EQ(doc["results"][0]["rays"], doc["results"][1]["rays"]);
+    EXPECT_GT(doc["results"][1]["rays"]["shadow"].get<uint64_t>(), 0u);
+}
