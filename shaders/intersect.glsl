@@ -83,3 +83,27 @@ bool intersectTriangle(vec3 origin, WatertightRay r, vec3 p0, vec3 p1, vec3 p2, 
     b12 = vec2(v, w) * invDet;
     return t > 0.0 && t < tMax;
 }
+
+// The common ray/triangle test (Moller & Trumbore 1997), kept for the triangles study only: its
+// edge tests round differently on the two triangles of a shared edge, so a ray through the edge
+// can miss both. Same outputs as intersectTriangle (b12: barycentrics of p1 and p2).
+bool intersectTriangleMollerTrumbore(vec3 origin, vec3 dir, vec3 p0, vec3 p1, vec3 p2,
+                                     float tMax, out float t, out vec2 b12) {
+    vec3 e1 = p1 - p0, e2 = p2 - p0;
+    vec3 p = cross(dir, e2);
+    float det = dot(e1, p);
+    if (det == 0.0)
+        return false;
+    float invDet = 1.0 / det;
+    vec3 s = origin - p0;
+    float u = dot(s, p) * invDet;
+    if (u < 0.0 || u > 1.0)
+        return false;
+    vec3 q = cross(s, e1);
+    float v = dot(dir, q) * invDet;
+    if (v < 0.0 || u + v > 1.0)
+        return false;
+    t = dot(e2, q) * invDet;
+    b12 = vec2(u, v);
+    return t > 0.0 && t < tMax;
+}

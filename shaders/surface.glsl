@@ -138,10 +138,13 @@ vec3 textureColor(uint textureIndex, vec2 uv) {
 }
 
 // Offset origin for a ray leaving `position` in `dir`: along the facing geometric normal, by an
-// amount relative to max|P_i| (never a fixed epsilon).
+// amount relative to max|P_i| (never a fixed epsilon). FIXED_RAY_OFFSET > 0 is the original's
+// fixed epsilon, kept for the offsets study only.
 vec3 offsetOrigin(vec3 position, vec3 facingNormal, vec3 dir) {
     vec3 a = abs(position);
     float eps = max(max(a.x, max(a.y, a.z)), float(PRISM_OFFSET_FLOOR)) * float(PRISM_OFFSET_RELATIVE);
+    if (FIXED_RAY_OFFSET > 0.0)
+        eps = FIXED_RAY_OFFSET;
     return position + (dot(dir, facingNormal) >= 0.0 ? eps : -eps) * facingNormal;
 }
 

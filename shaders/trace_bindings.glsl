@@ -22,6 +22,10 @@ layout(constant_id = kSpecStackSize) const uint STACK_SIZE = 9u;
 // lavapipe, and not capped at maxStorageBufferRange; docs/benchmarks.md).
 layout(constant_id = kSpecTexelBuffers) const bool TEXEL_BUFFERS = false;
 layout(constant_id = kSpecAdaptiveGrid) const bool ADAPTIVE_GRID = false;
+// The studies' stand-ins for methods Prism replaced (trace_interface.h); the defaults fold away.
+layout(constant_id = kSpecFixedRayOffset) const float FIXED_RAY_OFFSET = 0.0;
+layout(constant_id = kSpecTriangleTest) const uint TRIANGLE_TEST = kTriangleTestWatertight;
+const bool MOLLER_TRUMBORE = TRIANGLE_TEST == kTriangleTestMollerTrumbore;
 layout(constant_id = kSpecResumable) const bool RESUMABLE = false;
 
 layout(set = 0, binding = kBindingAccumImage, rgba32f) uniform image2D accumImage;

@@ -26,8 +26,14 @@ void testPrimitive(uint id, vec3 origin, vec3 dir, WatertightRay wray, inout Hit
         // then loads one word, not the whole idEnd vector, per test (that cost 7% on objects).
         uint tri = id - header.idEnd[kKindTriangle - 1u];
         vec2 b12;
-        if (intersectTriangle(origin, wray, triangleVertex(tri, 0u), triangleVertex(tri, 1u),
-                              triangleVertex(tri, 2u), hit.t, t, b12)) {
+        vec3 p0 = triangleVertex(tri, 0u), p1 = triangleVertex(tri, 1u);
+        vec3 p2 = triangleVertex(tri, 2u);
+        bool hitTriangle;
+        if (MOLLER_TRUMBORE)
+            hitTriangle = intersectTriangleMollerTrumbore(origin, dir, p0, p1, p2, hit.t, t, b12);
+        else
+            hitTriangle = intersectTriangle(origin, wray, p0, p1, p2, hit.t, t, b12);
+        if (hitTriangle) {
             hit.t = t;
             hit.kind = kKindTriangle;
             hit.index = tri;

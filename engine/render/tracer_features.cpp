@@ -1,6 +1,8 @@
 #include "render/tracer_features.h"
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <string>
 
 #include "core/error.h"
@@ -49,6 +51,11 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     // would otherwise run it, masked, for every hit).
     f.reflection = f.reflection && options.reflection && options.maxDepth > 1;
     f.transmission = f.transmission && options.transmission && options.maxDepth > 1;
+    if (!std::isfinite(options.fixedRayOffset) || options.fixedRayOffset < 0.0f)
+        throw Error("fixed ray offset " + std::to_string(options.fixedRayOffset) +
+                    " is not a finite number >= 0 (0: Prism's relative offset)");
+    f.fixedRayOffset = options.fixedRayOffset;
+    f.mollerTrumbore = options.mollerTrumbore;
     return f;
 }
 
@@ -70,7 +77,10 @@ std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
             {gpu::kSpecProfileWalkDetail, profile >= 2},
             {gpu::kSpecResumable, resumable},
             {gpu::kSpecResumeLaneBudget,
-             resumeLaneBudget == 0 ? gpu::kResumeLaneBudget : resumeLaneBudget}};
+             resumeLaneBudget == 0 ? gpu::kResumeLaneBudget : resumeLaneBudget},
+            {gpu::kSpecFixedRayOffset, std::bit_cast<uint32_t>(fixedRayOffset)},
+            {gpu::kSpecTriangleTest,
+             mollerTrumbore ? gpu::kTriangleTestMollerTrumbore : gpu::kTriangleTestWatertight}};
 }
 
 } // namespace prism

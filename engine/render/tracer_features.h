@@ -34,6 +34,11 @@ struct TracerOptions {
     bool resumable = false;
     uint32_t resumeLaneBudget = 0;
     uint64_t resumeMemoryBytes = uint64_t(64) << 20;
+    // For the studies only (prism-bench variants, docs/studies): the original's fixed offset of
+    // secondary-ray origins along the normal, in scene units (0: Prism's relative offset), and
+    // the common Moller-Trumbore triangle test instead of the watertight one.
+    float fixedRayOffset = 0.0f;
+    bool mollerTrumbore = false;
 };
 
 struct TracerFeatures {
@@ -53,6 +58,8 @@ struct TracerFeatures {
     uint32_t profile = 0;          // TracerOptions::profile
     bool resumable = false;        // loop budget and resumption (shaders/resume.glsl)
     uint32_t resumeLaneBudget = 0; // TracerOptions::resumeLaneBudget
+    float fixedRayOffset = 0.0f;   // TracerOptions::fixedRayOffset
+    bool mollerTrumbore = false;   // TracerOptions::mollerTrumbore
 
     bool has(uint32_t kind) const { return (kinds >> kind) & 1u; }
     std::vector<vk::SpecializationConstant> specialization() const;

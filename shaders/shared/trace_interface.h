@@ -55,6 +55,12 @@ PRISM_CONST(uint, kSpecStackSize, 9u);      // 2 * maxDepth - 1
 PRISM_CONST(uint, kSpecTexelBuffers, 10u);
 PRISM_CONST(uint, kSpecAdaptiveGrid, 11u);   // walk the adaptive grid's cells, not a regular DDA
 PRISM_CONST(uint, kSpecHasSurfaceMaps, 12u); // some material has a normal or bump map
+// For the studies only (docs/studies, prism-bench variants): the methods Prism replaced, so that
+// where they fail can be measured. At their defaults they fold away to Prism's own methods.
+PRISM_CONST(uint, kSpecFixedRayOffset, 13u);    // float: 0 = relative offset; > 0: fixed, in units
+PRISM_CONST(uint, kSpecTriangleTest, 14u);      // one of the kTriangleTest values below
+PRISM_CONST(uint, kTriangleTestWatertight, 0u); // Woop, Benthin & Wald 2013 (Prism's)
+PRISM_CONST(uint, kTriangleTestMollerTrumbore, 1u); // Moller & Trumbore 1997
 // Only in the profiling build (PRISM_PROFILE): also time the primitive loops (profile.glsl).
 PRISM_CONST(uint, kSpecProfileWalkDetail, 20u);
 // Trace with a loop budget and resume where it ran out in the next dispatch (resume.glsl).

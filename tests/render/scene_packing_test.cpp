@@ -1,8 +1,11 @@
 // The host's packing of the scene into std430 arrays (no device needed).
+#include <bit>
+#include <limits>
 #include <map>
 
 #include <gtest/gtest.h>
 
+#include "core/error.h"
 #include "render/frame_params.h"
 #include "render/scene_packing.h"
 #include "render/tracer_features.h"
@@ -135,7 +138,7 @@ TEST(TracerFeatures, FollowTheScene) {
     std::map<uint32_t, uint32_t> constants;
     for (vk::SpecializationConstant c : f.specialization())
         EXPECT_TRUE(constants.emplace(c.id, c.value).second) << "constant_id " << c.id << " twice";
-    EXPECT_EQ(constants.size(), 16u); // every constant_id of shared/trace_interface.h
+    EXPECT_EQ(constants.size(), 18u); // every constant_id of shared/trace_interface.h
     EXPECT_EQ(constants.at(gpu::kSpecAdaptiveGrid), 0u);
     EXPECT_EQ(constants.at(gpu::kSpecResumable), 0u) << "resumable only after a cut";
     EXPECT_EQ(constants.at(gpu::kSpecResumeLaneBudget), gpu::kResumeLaneBudget);
@@ -146,6 +149,33 @@ TEST(TracerFeatures, FollowTheScene) {
     EXPECT_EQ(constants.at(gpu::kSpecHasTextures), 0u);
     EXPECT_EQ(constants.at(gpu::kSpecHasSurfaceMaps), 0u);
     EXPECT_EQ(constants.at(gpu::kSpecHasTransmission), 1u);
+    EXPECT_EQ(constants.at(gpu::kSpecFixedRayOffset), 0u) << "Prism's relative offset";
+    EXPECT_EQ(constants.at(gpu::kSpecTriangleTest), gpu::kTriangleTestWatertight);
+}
+
+// The studies' stand-ins for replaced methods (docs/studies) are chosen only when asked for;
+// the fixed offset travels as the float's bits, and a negative or NaN one is refused.
+TEST(TracerFeatures, StudiesVariantsAreOptIn) {
+    Scene scene = stabilityScene();
+    Grid grid = buildGrid(scene);
+    auto constantsOf = [&](const TracerOptions &options) {
+        std::map<uint32_t, uint32_t> constants;
+        for (vk::SpecializationConstant c : chooseFeatures(scene, grid, options).specialization())
+            constants[c.id] = c.value;
+        return constants;
+    };
+    TracerOptions options;
+    EXPECT_EQ(constantsOf(options).at(gpu::kSpecFixedRayOffset), 0u);
+    options.fixedRayOffset = 0.01f;
+    options.mollerTrumbore = true;
+    auto constants = constantsOf(options);
+    EXPECT_EQ(constants.at(gpu::kSpecFixedRayOffset), std::bit_cast<uint32_t>(0.01f));
+    EXPECT_EQ(constants.at(gpu::kSpecTriangleTest), gpu::kTriangleTestMollerTrumbore);
+    for (float bad : {-1e-4f, std::numeric_limits<float>::quiet_NaN(),
+                      std::numeric_limits<float>::infinity()}) {
+        options.fixedRayOffset = bad;
+        EXPECT_THROW(chooseFeatures(scene, grid, options), Error) << bad;
+    }
 }
 
 TEST(FrameParams, FollowTheCameraModel) {

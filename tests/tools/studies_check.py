@@ -2,8 +2,9 @@
 """Test of tools/scripts/studies.py: runs `studies.py --quick` into a fresh folder and checks
 that every chart and data file is written, that the README links only files that exist, and
 that the numbers are finite and plausible (error falls as spp rises, more pixels cost more,
-switching features off removes rays). Exit 0 on success, 1 on failure, 77 (skipped) when the
-Python modules studies.py needs are missing.
+switching features off removes rays, the relative ray offset holds at every scale where a fixed
+one fails, the watertight triangle test lets no ray through where Moller-Trumbore does). Exit 0
+on success, 1 on failure, 77 (skipped) when the Python modules studies.py needs are missing.
 
     studies_check.py --bin BUILD/bin --out DIR
 """
@@ -77,10 +78,7 @@ def main():
         f = out / name / "section.json"
         if check(f.is_file(), f"{f} missing"):
             sections[name] = json.loads(f.read_text())
-    for name in ("offsets", "triangles"):
-        check(sections.get(name, {}).get("status") == "not yet available",
-              f"{name}: expected 'not yet available'")
-    for name in ("accuracy", "acceleration", "original"):
+    for name in ("accuracy", "offsets", "triangles", "acceleration", "original"):
         check(sections.get(name, {}).get("status", "").startswith("done"), f"{name} not done")
 
     # Accuracy: error is finite, in range, and falls as spp rises at every depth.
@@ -100,6 +98,46 @@ def main():
                   f"accuracy: {s} depth {d}: error does not fall with spp")
             check(by_spp[-1]["ssim"] > by_spp[0]["ssim"],
                   f"accuracy: {s} depth {d}: SSIM does not rise with spp")
+
+    # Offsets: every placement under every method; the relative offset gets no pixel wrong at
+    # any scale, the original's fixed 0.01 fails on the smallest scene.
+    off = json.loads((out / "offsets" / "data.json").read_text())
+    finite_numbers(off, "offsets")
+    check_files(out / "offsets", ["data.json", "data.csv", "wrong-pixels.png", "failures.png"])
+    cfg = off["config"]
+    placements = len(cfg["scale_exponents"]) + sum(1 for d in cfg["shifts"] if d > 0)
+    check(len(off["rows"]) == placements * 3 * 2, f"offsets: {len(off['rows'])} rows")
+    for r in off["rows"]:
+        check(0 <= r["wrong_fraction"] <= 1 and r["wrong_pixels"] >= 0, f"offsets: {r}")
+
+    def wrong(exponent, shift, method, centred):
+        return next(r["wrong_fraction"] for r in off["rows"] if r["scale_exponent"] == exponent
+                    and r["shift"] == shift and r["method"] == method and r["centred"] == centred)
+    # Scales are powers of two, so a relative offset sees the very same floats at every scale:
+    # centred, no pixel differs from the unit scene; in the file's coordinates, as many as at 1.
+    for e in cfg["scale_exponents"]:
+        check(wrong(e, 0.0, "auto", True) == 0,
+              f"offsets: relative offset has wrong pixels at scale 2^{e}")
+        check(wrong(e, 0.0, "auto", False) == wrong(0, 0.0, "auto", False),
+              f"offsets: relative offset in the file's coordinates depends on scale (2^{e})")
+    check(wrong(min(cfg["scale_exponents"]), 0.0, "offset=0.01", False) > 0.05,
+          "offsets: a fixed 0.01 offset does not fail on the smallest scene")
+    check(wrong(0, max(cfg["shifts"]), "auto", True) == 0,
+          "offsets: centred on the camera, the far scene has wrong pixels")
+
+    # Triangles: the watertight test lets no aimed ray through, Moller-Trumbore does somewhere.
+    tri = json.loads((out / "triangles" / "data.json").read_text())
+    finite_numbers(tri, "triangles")
+    check_files(out / "triangles", ["data.json", "data.csv", "leaks.png", "renders.png"])
+    check(len(tri["rows"]) == len(tri["config"]["shifts"]) * 2 * 2, "triangles: rows missing")
+    for r in tri["rows"]:
+        check(r["rays"] > 0 and 0 <= r["leaks"] <= r["rays"], f"triangles: {r}")
+        if r["method"] == "auto":
+            check(r["leaks"] == 0, f"triangles: the watertight test leaked: {r}")
+    check(any(r["leaks"] > 0 for r in tri["rows"] if r["method"] == "triangle=mt"),
+          "triangles: Moller-Trumbore never leaked")
+    for r in tri["timing"]:
+        check(r["trace_ms"] > 0 and r["rays"] > 0, f"triangles timing: {r}")
 
     # Acceleration: every variant ran, counts are sane, no grid tests the most.
     acc4 = json.loads((out / "acceleration" / "data.json").read_text())

@@ -5,14 +5,35 @@
 #include <memory>
 
 #include "bench_profile.h"
+#include "core/error.h"
 #include "core/median.h"
 #include "core/timer.h"
 #include "embree_baseline.h"
+#include "io/image_writer.h"
 #include "render/ray_tracer.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_origin.h"
 
 namespace prism {
+namespace {
+
+// The frame just traced, as an EXR (linear RGBA), unless the device reported validation
+// messages: then the image may be wrong and the run stops, as prism-render does.
+void saveImage(vk::Context &context, RayTracer &tracer, const BenchSettings &settings,
+               const std::filesystem::path &path) {
+    if (context.validationMessageCount() > 0)
+        throw Error(std::to_string(context.validationMessageCount()) +
+                    " Vulkan validation messages (printed above); refusing to write " +
+                    path.string());
+    TracedImage traced = tracer.readback(settings.samplesPerPixel);
+    OutputImage image;
+    image.width = int(traced.width);
+    image.height = int(traced.height);
+    image.rgba = std::move(traced.rgba);
+    writeImage(path, image, ImageMetadata{});
+}
+
+} // namespace
 
 double BenchResult::medianMs() const {
     return median(frameMs);
@@ -30,7 +51,8 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
     std::vector<BenchResult> all;
     for (const std::string &path : scenes) {
         Scene scene = loadScene(path);
-        centerOnCamera(scene);
+        if (!settings.keepOrigin)
+            centerOnCamera(scene);
         std::string name = std::filesystem::path(path).stem().string();
         std::vector<BenchResult> results;
         std::vector<std::unique_ptr<RayTracer>> tracers;
@@ -59,6 +81,10 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
                                                       settings.height, options);
             FrameResult warm = tracer->renderFrame(scene.camera, settings.samplesPerPixel);
             r.rays = warm.rays;
+            if (!settings.imageDir.empty())
+                saveImage(context, *tracer, settings,
+                          std::filesystem::path(settings.imageDir) /
+                              (name + "_" + variant.name + ".exr"));
             results.push_back(r);
             tracers.push_back(std::move(tracer));
             if (settings.profile)

@@ -26,6 +26,11 @@ struct BenchSettings {
     // Also run each variant's profiling tracer (in-shader clocks per phase; the context needs
     // the shader clock) after its timed frames: BenchResult::profile.
     bool profile = false;
+    // For the studies (docs/studies): keep the scene's file origin instead of moving it to the
+    // camera (scene/scene_origin.h), to show what that centring protects against; and, when not
+    // empty, write each variant's warm-up frame to imageDir/SCENE_VARIANT.exr.
+    bool keepOrigin = false;
+    std::string imageDir;
 };
 
 struct BenchResult {

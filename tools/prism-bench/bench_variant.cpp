@@ -1,11 +1,26 @@
 #include "bench_variant.h"
 
 #include <charconv>
+#include <cmath>
 #include <sstream>
 
 #include "core/error.h"
 
 namespace prism {
+namespace {
+
+// The number after "key=" in a variant: a finite float > 0, or an Error naming the variant.
+float parsePositive(const std::string &variant, const std::string &value, const char *key) {
+    float number = 0.0f;
+    auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), number);
+    if (ec != std::errc() || end != value.data() + value.size() || !(number > 0.0f) ||
+        !std::isfinite(number))
+        throw Error("variant " + variant + ": " + key + " must be a positive number, not '" +
+                    value + "'");
+    return number;
+}
+
+} // namespace
 
 BenchVariant parseBenchVariant(const std::string &text) {
     BenchVariant v;
@@ -21,12 +36,7 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.grid = parseGridOption(token.substr(5));
             v.grid.density = density;
         } else if (token.rfind("density=", 0) == 0) {
-            std::string value = token.substr(8);
-            float density = 0.0f;
-            auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), density);
-            if (ec != std::errc() || end != value.data() + value.size() || !(density > 0.0f))
-                throw Error("variant " + text + ": density must be a positive number");
-            v.grid.density = density;
+            v.grid.density = parsePositive(text, token.substr(8), "density");
         } else if (token == "no-reflection") {
             v.tracer.reflection = false;
         } else if (token == "no-refraction") {
@@ -37,11 +47,17 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.tracer.resumable = true;
         } else if (token == "texel" || token == "storage") {
             v.tracer.texelBuffers = token == "texel";
+        } else if (token == "offset=relative") {
+            v.tracer.fixedRayOffset = 0.0f;
+        } else if (token.rfind("offset=", 0) == 0) {
+            v.tracer.fixedRayOffset = parsePositive(text, token.substr(7), "offset");
+        } else if (token == "triangle=watertight" || token == "triangle=mt") {
+            v.tracer.mollerTrumbore = token == "triangle=mt";
         } else {
             throw Error("variant " + text + ": unknown part '" + token +
                         "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
-                        "no-reflection, "
-                        "no-refraction, no-shadows, texel, storage, resumable; join with +)");
+                        "no-reflection, no-refraction, no-shadows, texel, storage, resumable, "
+                        "offset=relative|E, triangle=watertight|mt; join with +)");
         }
     }
     return v;

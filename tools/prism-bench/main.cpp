@@ -131,8 +131,18 @@ int main(int argc, char **argv) {
            "Comma-separated variants: auto, regular, off, adaptive, two-level, grid=N|NxNyNz, "
            "density=L, "
            "no-reflection, no-refraction, no-shadows, texel or storage (how the hot arrays are "
-           "read), resumable (the loop-budget tracer from the first frame); join parts with +")
+           "read), resumable (the loop-budget tracer from the first frame); join parts with +. "
+           "For the studies (docs/studies) only, methods Prism replaced: offset=E (the "
+           "original's fixed ray offset of E scene units; offset=relative is Prism's) and "
+           "triangle=mt (Moller-Trumbore; triangle=watertight is Prism's)")
         ->default_val(variantList);
+    app.add_flag("--keep-origin", settings.keepOrigin,
+                 "For the studies: trace each scene in its file's coordinates instead of moving "
+                 "the origin to the camera as every renderer does (shows what that protects)");
+    app.add_option("--save-images", settings.imageDir,
+                   "For the studies: write each variant's first frame to DIR/SCENE_VARIANT.exr "
+                   "(linear RGBA), to compare variants' images")
+        ->check(CLI::ExistingDirectory);
     std::string baseline;
     app.add_option("--baseline", baseline,
                    "embree: also trace the same camera rays and one shadow ray per light per hit "

@@ -9,10 +9,9 @@ section under DIR (default docs/studies/); DIR/README.md collects every section 
 command line of the run that made it. --quick runs every study at toy size (the test suite
 runs it); the full set is sized to take about half an hour on 2 CPU cores with lavapipe.
 
-Studies: accuracy (speed against accuracy), offsets (ray offsets), triangles (watertight
-triangles), acceleration (grids against primitive count), original (the original system's
-tables). `offsets` and `triangles` need renderer variants that do not exist yet; they are
-reported as not available.
+Studies: accuracy (speed against accuracy), offsets (ray offsets; study_offsets.py), triangles
+(watertight triangles; study_triangles.py), acceleration (grids against primitive count),
+original (the original system's tables).
 
 Needs Python 3 with numpy, matplotlib and OpenImageIO (Debian: python3-numpy,
 python3-matplotlib, python3-openimageio) and a release build (cmake --preset release &&
@@ -33,6 +32,9 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+import study_offsets
+import study_triangles
 
 ROOT = Path(__file__).resolve().parents[2]
 SCENES = ROOT / "assets" / "scenes"
@@ -82,6 +84,12 @@ def make_config(quick):
             "quick": True,
             "accuracy": {"scenes": ["cornell"], "size": "64x48", "spp": [1, 16],
                          "depth": [1, 5], "ref_spp": 64, "ref_depth": 8, "check_spp": 32},
+            "offsets": {"scene": "studies/five-objects", "size": "64x48", "depth": 5,
+                        "scale_exponents": [-13, 0, 13], "shifts": [0, 1e6],
+                        "shift_floor": 10},
+            "triangles": {"size": 32, "shifts": [0, 1e5], "shift_floor": 1,
+                          "time_scenes": ["bunny"], "time_size": "64x48", "time_depth": 1,
+                          "runs": 1},
             "acceleration": {"size": "64x48", "depth": 1, "runs": 1, "spheres": [50, 500],
                              "tori": [5000], "stadium": False, "off_max_primitives": 5000,
                              "embree": False},
@@ -95,6 +103,12 @@ def make_config(quick):
         "accuracy": {"scenes": SEEDS + ["showcase", "cornell"], "size": "160x120",
                      "spp": [1, 2, 4, 8, 16, 64], "depth": [1, 2, 3, 5, 8], "ref_spp": 256,
                      "ref_depth": 12, "check_spp": 128},
+        "offsets": {"scene": "studies/five-objects", "size": "160x120", "depth": 5,
+                    "scale_exponents": [-13, -10, -7, -3, 0, 3, 7, 10, 13],
+                    "shifts": [0, 1e2, 1e3, 1e4, 1e5, 1e6], "shift_floor": 10},
+        "triangles": {"size": 128, "shifts": [0, 1e1, 1e2, 1e3, 1e4, 1e5], "shift_floor": 1,
+                      "time_scenes": ["bunny", "teapot"], "time_size": "512x384",
+                      "time_depth": 2, "runs": 9},
         "acceleration": {"size": "256x192", "depth": 1, "runs": 3,
                          "spheres": [50, 500, 5000, 50000],
                          "tori": [5000, 50000, 200000, 1000000], "stadium": True,
@@ -250,9 +264,11 @@ class Tools:
         self.device = self.device or stats.get("device")
         return stats
 
-    def bench(self, scenes, variants, what, size, depth, runs, spp=1, embree=False):
+    def bench(self, scenes, variants, what, size, depth, runs, spp=1, embree=False,
+              save_images=None, keep_origin=False):
         """Times scenes under variants in one prism-bench process (frames interleaved); returns
-        its --json document."""
+        its --json document. save_images: a folder for each variant's SCENE_VARIANT.exr;
+        keep_origin: trace in the files' coordinates, not centred on the camera."""
         with tempfile.TemporaryDirectory() as tmp:
             path = Path(tmp) / "bench.json"
             cmd = [self.bin / "prism-bench", *scenes, "--size", size, "--depth", depth,
@@ -260,6 +276,10 @@ class Tools:
                    "--json", path]
             if embree:
                 cmd += ["--baseline", "embree"]
+            if save_images:
+                cmd += ["--save-images", save_images]
+            if keep_origin:
+                cmd += ["--keep-origin"]
             self._run(cmd, what)
             doc = json.loads(path.read_text())
         self.device = self.device or doc.get("device")
@@ -629,23 +649,15 @@ def _accuracy_markdown(rows, refs, c, charts):
 
 
 # --------------------------------------------------------------------------------------------
-# Studies 2 and 3: need renderer variants that do not exist yet.
+# Studies 2 and 3 (where offsets and triangle tests fail) live in their own files; they use this
+# module's helpers, so it passes itself in.
 
-def study_unavailable(name, needs):
-    """A section that says what is missing, so the README is complete and honest."""
-    return ("**Not yet available.** " + needs + " This run wrote no charts or data for it; "
-            "`studies.py` lists it and moves on.")
+def study_offsets_run(tools, cfg, out, progress, tmp):
+    return study_offsets.run(sys.modules[__name__], tools, cfg, out, progress, tmp)
 
 
-OFFSETS_NEEDS = ("It needs prism-bench variants that keep the original's fixed ray offset "
-                 "(0.01) and a fixed 1e-4 beside Prism's relative offset (2^-18 max|P|, "
-                 "docs/design.md), i.e. a shader change, then renders of one scene scaled "
-                 "1e-4 ... 1e4 and moved up to 1e6 from the origin, counting pixels that differ "
-                 "from the unit scene.")
-TRIANGLES_NEEDS = ("It needs a Möller–Trumbore triangle test as a prism-bench variant beside "
-                   "Prism's watertight test (a shader change), and a ray generator that aims "
-                   "rays exactly at the shared edges and vertices of closed meshes, counting "
-                   "the rays that leak through and the time each test costs.")
+def study_triangles_run(tools, cfg, out, progress, tmp):
+    return study_triangles.run(sys.modules[__name__], tools, cfg, out, progress, tmp)
 
 
 def variant_supported(tools, token):
@@ -1181,6 +1193,20 @@ def replot(out, chosen, args):
             charts = _accuracy_charts(d["rows"], d["references"], d["config"], folder)
             sec["markdown"] = _accuracy_markdown(d["rows"], d["references"], d["config"], charts)
             sec["summary"] = _accuracy_summary(d["rows"], d["config"])
+        elif name == "offsets":
+            kit = sys.modules[__name__]
+            charts = study_offsets.charts_of(kit, d["rows"], d["config"], folder)
+            if (folder / "failures.png").is_file():  # made from the images, not the data
+                charts["failures"] = "failures.png"
+            sec["markdown"] = study_offsets.markdown(kit, d["rows"], d["config"], charts)
+            sec["summary"] = study_offsets.summary(d["rows"])
+        elif name == "triangles":
+            kit = sys.modules[__name__]
+            chart = study_triangles.charts_of(kit, d["rows"], d["timing"], d["config"], folder)
+            renders = "renders.png" if (folder / "renders.png").is_file() else None
+            sec["markdown"] = study_triangles.markdown(kit, d["rows"], d["timing"], d["config"],
+                                                       chart, renders)
+            sec["summary"] = study_triangles.summary(d["rows"], d["timing"])
         elif name == "acceleration":
             charts = _accel_charts(d["rows"], d["config"], d["grid_modes"], folder)
             sec["markdown"] = _accel_markdown(d["rows"], d["config"], d["grid_modes"],
@@ -1250,17 +1276,11 @@ def main():
             started = time.monotonic()
             with tempfile.TemporaryDirectory(prefix=f"studies-{name}-") as tmp:
                 try:
-                    if name == "offsets":
-                        status, md = "not yet available", study_unavailable(name, OFFSETS_NEEDS)
-                        summary = "Not yet available: needs fixed-offset shader variants."
-                    elif name == "triangles":
-                        status, md = "not yet available", study_unavailable(name, TRIANGLES_NEEDS)
-                        summary = "Not yet available: needs a Möller–Trumbore shader variant."
-                    else:
-                        fn = {"accuracy": study_accuracy, "acceleration": study_acceleration,
-                              "original": study_original}[name]
-                        md, summary = fn(tools, config, out, progress, Path(tmp))
-                        status = "done" + (" (quick)" if args.quick else "")
+                    fn = {"accuracy": study_accuracy, "offsets": study_offsets_run,
+                          "triangles": study_triangles_run, "acceleration": study_acceleration,
+                          "original": study_original}[name]
+                    md, summary = fn(tools, config, out, progress, Path(tmp))
+                    status = "done" + (" (quick)" if args.quick else "")
                 except StudyError as e:
                     progress.end()
                     print(f"studies.py: {name}: {e}", file=sys.stderr)
