@@ -69,6 +69,17 @@ public:
     // Copies the accumulation (and AOVs) to the host and divides by the sample count.
     TracedImage readback(uint32_t samplesPerPixel);
 
+    // Resumable tracing (shaders/resume.glsl) for callers that record their own frames (the
+    // viewer), once their counters show cut pixels: enableResumable switches this tracer for
+    // good (waits for the device); traceSampleNow traces one sample of the accumulation now,
+    // in as many submissions as it takes, and waits. Its counters add to the recorded ones
+    // (or start again, with resetCounters).
+    // Throws prism::Error as renderFrame does.
+    bool resumable() const { return features_.resumable; }
+    void enableResumable();
+    FrameResult traceSampleNow(const Camera &camera, uint32_t sample, uint32_t samplesPerPixel,
+                               bool resetCounters);
+
     // For callers that record their own frames (the viewer). The ray and over-budget counters
     // add up over every dispatch until reset. A snapshot copies them, after the dispatches
     // recorded before it, into `target` (host-visible, counterBytes() long) for decodeCounters.
@@ -98,6 +109,8 @@ private:
     void startResuming();
     FrameResult renderResumable(const Camera &camera, uint32_t samplesPerPixel,
                                 const std::function<void(double)> &progress);
+    void traceSampleResumably(const Camera &camera, uint32_t sample, uint32_t samplesPerPixel,
+                              bool resetCounters, FrameResult &result);
 
     vk::Context &context_;
     uint32_t width_ = 0, height_ = 0;

@@ -42,9 +42,10 @@ void RayTracer::startResuming() {
     createPipeline();
 }
 
-FrameResult RayTracer::renderResumable(const Camera &camera, uint32_t samplesPerPixel,
-                                       const std::function<void(double)> &progress) {
-    if (resumePlan_.tileWidth == 0) // the first frame of a tracer that resumes from the start
+void RayTracer::traceSampleResumably(const Camera &camera, uint32_t sample,
+                                     uint32_t samplesPerPixel, bool resetCounters,
+                                     FrameResult &result) {
+    if (resumePlan_.tileWidth == 0) // the first sample of a tracer that resumes from the start
         startResuming();
     const ResumePlan &plan = resumePlan_;
     uint32_t tilesX = (width_ + plan.tileWidth - 1) / plan.tileWidth;
@@ -52,61 +53,78 @@ FrameResult RayTracer::renderResumable(const Camera &camera, uint32_t samplesPer
     gpu::GpuFrameParams params =
         makeFrameParams(camera, width_, height_, samplesPerPixel, features_.maxDepth);
     params.control.w = plan.walkLogSize;
-    FrameResult result;
+    params.image.z = sample;
     const auto *counters = static_cast<const gpu::GpuStats *>(stats_.mapped());
-    bool first = true;
-    for (uint32_t sample = 0; sample < samplesPerPixel; ++sample) {
-        params.image.z = sample;
-        for (uint32_t ty = 0; ty < tilesY; ++ty) {
-            for (uint32_t tx = 0; tx < tilesX; ++tx) {
-                uint32_t x0 = tx * plan.tileWidth, y0 = ty * plan.tileHeight;
-                params.control.z = x0 | (y0 << 16u);
-                uint32_t groupsX = (std::min(plan.tileWidth, width_ - x0) + 7) / 8;
-                uint32_t groupsY = (std::min(plan.tileHeight, height_ - y0) + 7) / 8;
-                for (bool fresh = true;; fresh = false) {
-                    Timer hostTimer;
-                    runner_.run([&](VkCommandBuffer commands) {
-                        timestamps_.recordReset(commands);
-                        afterEarlierDispatches(commands);
-                        if (first)
-                            vkCmdFillBuffer(commands, stats_.handle(), 0, VK_WHOLE_SIZE, 0);
-                        else
-                            vkCmdFillBuffer(commands, stats_.handle(),
-                                            offsetof(gpu::GpuStats, unfinishedPixels), 16, 0);
-                        if (fresh) // a new sample of this tile: every pixel starts again
-                            vkCmdFillBuffer(commands, resumeRecords_.handle(), 0, VK_WHOLE_SIZE, 0);
-                        afterEarlierDispatches(commands);
-                        timestamps_.recordStart(commands);
-                        pipeline_->bind(commands);
-                        recordDispatch(commands, params, groupsX, groupsY);
-                        timestamps_.recordEnd(commands);
-                        VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-                        toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-                        toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-                        vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                                             VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr,
-                                             0, nullptr);
-                    });
-                    first = false;
-                    result.gpuMs += timestamps_.elapsedMs().value_or(hostTimer.elapsedMs());
-                    result.resumeDispatches += 1;
-                    if (counters->stuckPixels > 0)
-                        throw Error(std::to_string(counters->stuckPixels) +
-                                    " pixels cannot be finished by resumable tracing: a sample "
-                                    "needs more ray walks than it can log (" +
-                                    std::to_string(plan.walkLogSize) +
-                                    ") or replay in one dispatch; use a lower --depth");
-                    if (counters->unfinishedPixels == 0)
-                        break;
-                }
+    for (uint32_t ty = 0; ty < tilesY; ++ty) {
+        for (uint32_t tx = 0; tx < tilesX; ++tx) {
+            uint32_t x0 = tx * plan.tileWidth, y0 = ty * plan.tileHeight;
+            params.control.z = x0 | (y0 << 16u);
+            uint32_t groupsX = (std::min(plan.tileWidth, width_ - x0) + 7) / 8;
+            uint32_t groupsY = (std::min(plan.tileHeight, height_ - y0) + 7) / 8;
+            for (bool fresh = true;; fresh = false) {
+                Timer hostTimer;
+                runner_.run([&](VkCommandBuffer commands) {
+                    timestamps_.recordReset(commands);
+                    afterEarlierDispatches(commands);
+                    if (resetCounters)
+                        vkCmdFillBuffer(commands, stats_.handle(), 0, VK_WHOLE_SIZE, 0);
+                    else
+                        vkCmdFillBuffer(commands, stats_.handle(),
+                                        offsetof(gpu::GpuStats, unfinishedPixels), 16, 0);
+                    if (fresh) // a new sample of this tile: every pixel starts again
+                        vkCmdFillBuffer(commands, resumeRecords_.handle(), 0, VK_WHOLE_SIZE, 0);
+                    afterEarlierDispatches(commands);
+                    timestamps_.recordStart(commands);
+                    pipeline_->bind(commands);
+                    recordDispatch(commands, params, groupsX, groupsY);
+                    timestamps_.recordEnd(commands);
+                    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+                    toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+                    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+                    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                         VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0,
+                                         nullptr);
+                });
+                resetCounters = false;
+                result.gpuMs += timestamps_.elapsedMs().value_or(hostTimer.elapsedMs());
+                result.resumeDispatches += 1;
+                if (counters->stuckPixels > 0)
+                    throw Error(std::to_string(counters->stuckPixels) +
+                                " pixels cannot be finished by resumable tracing: a sample "
+                                "needs more ray walks than it can log (" +
+                                std::to_string(plan.walkLogSize) +
+                                ") or replay in one dispatch; use a lower --depth");
+                if (counters->unfinishedPixels == 0)
+                    break;
             }
         }
+    }
+}
+
+FrameResult RayTracer::renderResumable(const Camera &camera, uint32_t samplesPerPixel,
+                                       const std::function<void(double)> &progress) {
+    FrameResult result;
+    for (uint32_t sample = 0; sample < samplesPerPixel; ++sample) {
+        traceSampleResumably(camera, sample, samplesPerPixel, sample == 0, result);
         if (progress)
             progress(double(sample + 1) / samplesPerPixel);
     }
     FrameResult counted = decodeCounters(stats_.mapped());
     result.rays = counted.rays;
     result.loopCutPixels = counted.loopCutPixels;
+    return result;
+}
+
+void RayTracer::enableResumable() {
+    if (!features_.resumable || resumePlan_.tileWidth == 0)
+        startResuming();
+}
+
+FrameResult RayTracer::traceSampleNow(const Camera &camera, uint32_t sample,
+                                      uint32_t samplesPerPixel, bool resetCounters) {
+    enableResumable();
+    FrameResult result;
+    traceSampleResumably(camera, sample, samplesPerPixel, resetCounters, result);
     return result;
 }
 

@@ -200,3 +200,25 @@ TEST_F(PrismViewXvfb, ErrorsSayWhatIsWrong) {
 }
 
 } // namespace
+
+// A view past lavapipe's loop limit (33,000 spheres without the grid: ~66,000 iterations for a
+// lit pixel): the first frame is cut, prism-view switches to resumable tracing, and the
+// screenshot equals prism-render's image, which is traced resumably too.
+TEST_F(PrismViewXvfb, ViewPastTheLoopLimitIsTracedResumably) {
+    std::string text = "camera eye 0 0 5 look 0 0 0\nlight 0 0 10\n";
+    for (int i = 0; i < 33000; ++i)
+        text += "sphere " + std::to_string(1000 + i) + " 1000 1000 0.1\n";
+    text += "sphere 0 0 0 1.5\nsphere 0.5 0 7 0.5\n";
+    fs::path scene = write("many.scene", text);
+    fs::path shot = dir_ / "view.exr", reference = dir_ / "render.exr";
+    CliResult view =
+        run(underXvfb(scene.string() + " --grid off --size 32x24 --spp 1 " +
+                      "--script-frames 4 --screenshot " + shot.string() + " --validation"));
+    ASSERT_EQ(viewExit(view), 0) << view.out;
+    EXPECT_NE(view.out.find("tracing resumably"), std::string::npos) << view.out;
+    CliResult render = run(std::string(PRISM_RENDER_EXE) + " " + scene.string() +
+                           " --grid off --size 32x24 --spp 1 --quiet -o " + reference.string());
+    ASSERT_EQ(render.exitCode, 0) << render.out;
+    prism::LoadedImage a = prism::readImage(shot), b = prism::readImage(reference);
+    EXPECT_EQ(a.pixels, b.pixels);
+}

@@ -313,10 +313,40 @@ void Viewer::updateCamera(uint32_t frame, double seconds, double scroll) {
     }
 }
 
+void Viewer::traceResumably() {
+    drainFrames();
+    notice_ = std::to_string(minus(lastCounters_, accumulationBase_).loopCutPixels) +
+              " pixels overran the loop limit: tracing resumably from now on";
+    std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
+    tracer_->enableResumable();
+    resetCounters_ = true;
+    lastCounters_ = {};
+    accumulationBase_ = {};
+    samples_ = 0;
+}
+
 bool Viewer::drawFrame(bool measured) {
     frames_->waitCurrent();
     uint32_t slot = frames_->current();
     completeSlot(slot);
+    if (!tracer_->resumable() && lastCounters_.loopCutPixels > 0)
+        traceResumably();
+    // A resumable sample is traced now, in submissions of its own, before this frame's
+    // commands: no frame in flight may read the accumulation meanwhile.
+    bool tracedNow = false;
+    if (tracer_->resumable() && samples_ < options_.samplesPerPixel) {
+        drainFrames();
+        try {
+            tracer_->traceSampleNow(tracedCamera_, samples_, options_.samplesPerPixel,
+                                    resetCounters_);
+            resetCounters_ = false;
+            tracedNow = true;
+        } catch (const Error &e) {
+            notice_ = e.what();
+            std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
+            samples_ = options_.samplesPerPixel; // nothing more to trace for this view
+        }
+    }
 
     uint32_t imageIndex = 0;
     VkResult acquired =
@@ -337,11 +367,12 @@ bool Viewer::drawFrame(bool measured) {
         tracer_->recordResetCounters(commands);
         resetCounters_ = false;
     }
-    bool traced = samples_ < options_.samplesPerPixel;
+    bool traced = tracedNow || samples_ < options_.samplesPerPixel;
     if (traced) {
         record.restart = samples_ == 0;
         // Sample s of N: the same stratum and random numbers prism-render --spp N uses.
-        tracer_->recordSamples(commands, tracedCamera_, samples_, 1, options_.samplesPerPixel);
+        if (!tracedNow)
+            tracer_->recordSamples(commands, tracedCamera_, samples_, 1, options_.samplesPerPixel);
         samples_ += 1;
     }
     tracer_->recordCounterSnapshot(commands, counterSnapshots_[slot].handle());

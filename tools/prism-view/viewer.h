@@ -62,6 +62,9 @@ private:
     uint32_t motionScale() const;
     void drainFrames();
     void completeSlot(uint32_t slot);
+    // Once a frame's pixels overran lavapipe's loop limit: trace resumably from now on (the
+    // accumulation starts again), each sample before its frame is recorded.
+    void traceResumably();
     void handleKeys(const std::vector<int> &keys);
     FlyInput flyInput(double scroll);
     void updateCamera(uint32_t frame, double seconds, double scroll);
