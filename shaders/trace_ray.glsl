@@ -63,7 +63,9 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
                     uint cellFirst = first;
                     first = min(first + resume.skipTests, end); // tested in an earlier dispatch
                     resume.skipTests = 0u;
-                    chargeBudget(8u); // the step, the voxel-map descent, the loop's extra pass
+                    // The cell's pass, the primitive loop's extra pass, and the voxel-map
+                    // descent: at most one level per bit of voxels.w, plus its extra pass.
+                    chargeBudget(ADAPTIVE_GRID ? 4u + uint(header.voxels.w) : 4u);
                     uint left = budgetLeft();
                     if (end - first > left) {
                         end = first + left;

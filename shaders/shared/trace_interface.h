@@ -68,9 +68,11 @@ PRISM_CONST(uint, kSpecResumable, 21u);
 PRISM_CONST(uint, kSpecResumeLaneBudget, 22u); // loop iterations a lane may charge per dispatch
 // A subgroup's 8 lanes step through loops together, so its count is at most the sum of theirs.
 // Each loop a subgroup enters runs once more than its lanes count (NIR's loops test at the top,
-// gallivm's at the bottom, even with no lane active): resume.glsl charges every cell, walk,
-// bounce and light an extra 8 for the loops inside it. 8 x 7,900 leaves 2,300 of lavapipe's
-// 65,535 for the few loops outside all of those.
+// gallivm's at the bottom, even with no lane active): resume.glsl charges every walk, bounce
+// and light an extra 8 for the loops inside it, and every cell its passes with the voxel-map
+// descent's levels. 8 x 7,900 leaves 2,300 of lavapipe's 65,535 for the few loops outside all
+// of those. Should a cut happen anyway, the loop probe sees it and the sample is refused by
+// name, never written wrong.
 PRISM_CONST(uint, kResumeLaneBudget, 7900u);
 
 PRISM_NAMESPACE_END
