@@ -77,28 +77,20 @@ void RayTracer::resize(uint32_t width, uint32_t height) {
 
 void RayTracer::recordResetCounters(VkCommandBuffer commands) {
     vkCmdFillBuffer(commands, stats_.handle(), 0, VK_WHOLE_SIZE, 0);
-    VkMemoryBarrier fill{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    fill.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    fill.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &fill, 0, nullptr, 0, nullptr);
+    vk::memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 }
 
 void RayTracer::recordCounterSnapshot(VkCommandBuffer commands, VkBuffer target) const {
-    VkMemoryBarrier toCopy{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    toCopy.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-    toCopy.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                         VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &toCopy, 0, nullptr, 0, nullptr);
+    vk::memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferCopy region{0, 0, sizeof(gpu::GpuStats)};
     vkCmdCopyBuffer(commands, stats_.handle(), target, 1, &region);
-    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
     // Also orders the next frame's counter updates after this read.
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1,
-                         &toHost, 0, nullptr, 0, nullptr);
+    vk::memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_HOST_READ_BIT);
 }
 
 VkDeviceSize RayTracer::counterBytes() {
@@ -188,11 +180,9 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
             timestamps_.recordStart(commands);
             recordSamples(commands, camera, done, end - done, samplesPerPixel);
             timestamps_.recordEnd(commands);
-            VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-            toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-            toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-            vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                                 VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
+            vk::memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                              VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                              VK_ACCESS_HOST_READ_BIT);
         });
         double hostMs = hostTimer.elapsedMs();
         result.gpuMs += timestamps_.elapsedMs().value_or(hostMs);
@@ -205,8 +195,7 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
     result.loopCutPixels = counted.loopCutPixels;
     result.phaseNs = counted.phaseNs;
     if (result.loopCutPixels > 0) {
-        startResuming();
-        FrameResult resumed = renderResumable(camera, samplesPerPixel, progress);
+        FrameResult resumed = renderResumable(camera, samplesPerPixel, progress); // switches
         resumed.gpuMs += result.gpuMs; // the frame's time includes the pass that was cut
         resumed.loopCutPixels = 0;
         return resumed;
@@ -242,11 +231,8 @@ TracedImage RayTracer::readback(uint32_t samplesPerPixel) {
         copyOut(accum_, colour.handle());
         if (withAov)
             copyOut(aov_, aov.handle());
-        VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-        toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-        toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-        vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT,
-                             0, 1, &toHost, 0, nullptr, 0, nullptr);
+        vk::memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
     });
     const float *sums = static_cast<const float *>(colour.mapped());
     out.rgba.resize(pixels * 4);

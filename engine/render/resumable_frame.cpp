@@ -17,14 +17,11 @@ namespace {
 
 // Compute writes of one submission made visible to the next one's fills and shader reads.
 void afterEarlierDispatches(VkCommandBuffer commands) {
-    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-    barrier.dstAccessMask =
-        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
-    vkCmdPipelineBarrier(commands,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                         1, &barrier, 0, nullptr, 0, nullptr);
+    VkPipelineStageFlags stages =
+        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
+    vk::memoryBarrier(
+        commands, stages, VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, stages,
+        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
 }
 
 } // namespace
@@ -45,8 +42,6 @@ void RayTracer::startResuming() {
 void RayTracer::traceSampleResumably(const Camera &camera, uint32_t sample,
                                      uint32_t samplesPerPixel, bool resetCounters,
                                      FrameResult &result) {
-    if (resumePlan_.tileWidth == 0) // the first sample of a tracer that resumes from the start
-        startResuming();
     const ResumePlan &plan = resumePlan_;
     uint32_t tilesX = (width_ + plan.tileWidth - 1) / plan.tileWidth;
     uint32_t tilesY = (height_ + plan.tileHeight - 1) / plan.tileHeight;
@@ -78,12 +73,9 @@ void RayTracer::traceSampleResumably(const Camera &camera, uint32_t sample,
                     pipeline_->bind(commands);
                     recordDispatch(commands, params, groupsX, groupsY);
                     timestamps_.recordEnd(commands);
-                    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-                    toHost.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-                    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-                    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                                         VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0,
-                                         nullptr);
+                    vk::memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                      VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                                      VK_ACCESS_HOST_READ_BIT);
                 });
                 resetCounters = false;
                 result.gpuMs += timestamps_.elapsedMs().value_or(hostTimer.elapsedMs());
@@ -103,6 +95,7 @@ void RayTracer::traceSampleResumably(const Camera &camera, uint32_t sample,
 
 FrameResult RayTracer::renderResumable(const Camera &camera, uint32_t samplesPerPixel,
                                        const std::function<void(double)> &progress) {
+    enableResumable(); // a tracer asked to resume from the start plans its tiles here
     FrameResult result;
     for (uint32_t sample = 0; sample < samplesPerPixel; ++sample) {
         traceSampleResumably(camera, sample, samplesPerPixel, sample == 0, result);

@@ -10,4 +10,9 @@ void imageBarrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, V
                   VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
                   VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
 
+// A global memory barrier: writes of srcAccess in srcStage made visible to dstAccess in
+// dstStage (buffers written by one command and read by the next, or by the host).
+void memoryBarrier(VkCommandBuffer commands, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                   VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
+
 } // namespace prism::vk
