@@ -86,6 +86,28 @@ struct Triangle {
     uint32_t material = 0;
 };
 
+// A mesh loaded once by `mesh PATH ... as NAME` and drawn by `place NAME` lines
+// (docs/scene-format.md, "Instances"): its triangles in its own space, which the loader centres
+// on their bounding box so that an instance's coordinates stay as small as the mesh is.
+struct MeshPrototype {
+    std::string name;
+    std::vector<Triangle> triangles;
+};
+
+constexpr int32_t kOwnMaterials = -1; // an instance keeps its mesh's materials
+
+// One placement of a prototype: p_world = translation + scale * rotation * p. A similarity (the
+// scale is uniform, as on `mesh` lines), so t along a ray is the same in both spaces, and normals
+// only turn.
+struct Instance {
+    uint32_t prototype = 0;
+    double scale = 1.0;
+    glm::dmat3 rotation{1.0};
+    glm::dvec3 translation{0.0};
+    int32_t material = kOwnMaterials; // otherwise every face of this placement uses it
+    glm::dvec3 toWorld(const glm::dvec3 &p) const { return translation + scale * (rotation * p); }
+};
+
 struct Scene {
     // Where this scene's coordinate origin lies in its file's coordinates: 0 as loaded, the
     // camera's eye once centred for rendering (scene/scene_origin.h).
@@ -99,11 +121,16 @@ struct Scene {
     std::vector<Texture> textures;
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;
-    std::vector<Triangle> triangles;
+    std::vector<Triangle> triangles;      // in scene space
+    std::vector<MeshPrototype> prototypes; // drawn only where instances place them
+    std::vector<Instance> instances;
     std::vector<std::string> warnings; // "FILE:LINE: warning: ..." lines, in order
 
-    // Primitives that live in the grid (their ids: scene/primitive_ids.h).
-    size_t finitePrimitiveCount() const { return spheres.size() + triangles.size(); }
+    // Primitives that live in the grid (their ids: scene/primitive_ids.h); an instance is one,
+    // its prototype's triangles live in a grid of their own.
+    size_t finitePrimitiveCount() const {
+        return spheres.size() + triangles.size() + instances.size();
+    }
 };
 
 } // namespace prism
