@@ -27,30 +27,48 @@ uint budgetLeft() {
     return gBudgetUsed < LANE_BUDGET ? LANE_BUDGET - gBudgetUsed : 0u;
 }
 
-// Log entries: x t, y kind << 30 | index (kind 3: none), zw barycentrics.
+// An instance's walk is not interrupted: the walk stops before one unless this much budget is
+// left (a prototype's regular grid costs a few hundred iterations a walk; one that costs more
+// overruns the budget, and a cut that follows is refused by name). A quarter of a small test
+// budget, so that a resumed walk still gets past its first instance.
+const uint kInstanceWalkReserve = LANE_BUDGET / 4u < 1024u ? LANE_BUDGET / 4u : 1024u;
+
+// Log entries: x t, y kind << 29 | index (kind 7: none; the host keeps indices below 2^29), zw
+// barycentrics; in a scene with instances a second uvec4 whose x is the hit's instance.
+const uint kLogEntryWords = HAS_INSTANCES ? 2u : 1u;
+
 uvec4 packHit(Hit hit) {
-    uint kind = hit.kind == kKindNone ? 3u : hit.kind;
-    return uvec4(floatBitsToUint(hit.t), (kind << 30u) | hit.index, floatBitsToUint(hit.b12));
+    uint kind = hit.kind == kKindNone ? 7u : hit.kind;
+    return uvec4(floatBitsToUint(hit.t), (kind << 29u) | hit.index, floatBitsToUint(hit.b12));
 }
 
-Hit unpackHit(uvec4 packed) {
+Hit unpackHit(uvec4 packed, uint instance) {
     Hit hit;
     hit.t = uintBitsToFloat(packed.x);
-    hit.kind = packed.y >> 30u == 3u ? kKindNone : packed.y >> 30u;
-    hit.index = packed.y & 0x3FFFFFFFu;
+    hit.kind = packed.y >> 29u == 7u ? kKindNone : packed.y >> 29u;
+    hit.index = packed.y & 0x1FFFFFFFu;
     hit.b12 = uintBitsToFloat(packed.zw);
+    hit.instance = instance;
     return hit;
 }
 
 uint walkLogEntry(uint walk) {
-    return gRecord * frameWalkLogSize(frame) + walk;
+    return (gRecord * frameWalkLogSize(frame) + walk) * kLogEntryWords;
+}
+
+Hit loggedHit(uint walk) {
+    uint entry = walkLogEntry(walk);
+    return unpackHit(walkLog[entry], HAS_INSTANCES ? walkLog[entry + 1u].x : kNoInstance);
 }
 
 void logWalk(uint walk, Hit hit) {
-    if (walk < frameWalkLogSize(frame))
+    if (walk < frameWalkLogSize(frame)) {
         walkLog[walkLogEntry(walk)] = packHit(hit);
-    else
+        if (HAS_INSTANCES)
+            walkLog[walkLogEntry(walk) + 1u] = uvec4(hit.instance, 0u, 0u, 0u);
+    } else {
         gLogFull = true;
+    }
 }
 
 // Where a walk resumes: the walker's state on entering the cell it was in (the regular grid's
@@ -70,6 +88,6 @@ void interruptSample(uint walk, WalkResume resume, Hit best) {
     gOutOfBudget = true;
     gInterrupted.progress = uvec4(walk, 0u, resume.skipTests, 1u);
     gInterrupted.bestHit = packHit(best);
-    gInterrupted.walker = uvec4(resume.cell, 0);
+    gInterrupted.walker = uvec4(resume.cell, best.instance);
     gInterrupted.walkerT = uvec4(floatBitsToUint(resume.t), 0u);
 }

@@ -48,6 +48,16 @@ void triangleTangents(vec3 e1, vec3 e2, vec2 d1, vec2 d2, out vec3 dpdu, out vec
     dpdv = sign(det) * (d1.x * e2 - d2.x * e1);
 }
 
+// An instance's map out of its prototype's space (rows of GpuInstance::toWorld): a similarity,
+// so normals turn as positions do and only need normalising.
+vec3 placePoint(vec4 rows[3], vec3 p) {
+    return vec3(dot(rows[0].xyz, p) + rows[0].w, dot(rows[1].xyz, p) + rows[1].w,
+                dot(rows[2].xyz, p) + rows[2].w);
+}
+vec3 placeNormal(vec4 rows[3], vec3 n) {
+    return normalize(vec3(dot(rows[0].xyz, n), dot(rows[1].xyz, n), dot(rows[2].xyz, n)));
+}
+
 // Hit points are rebuilt from the primitive (not origin + t * dir) so their error is relative
 // to |P|, which is what the relative ray offset assumes.
 Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
@@ -84,6 +94,15 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         s.material = planeMaterial(plane);
     } else {
         GpuTriangle tri = triangleAt(hit.index);
+        bool instanced = HAS_INSTANCES && hit.instance != kNoInstance;
+        vec4 toWorld[3];
+        if (instanced) { // the prototype's triangle, placed: then all is as for the scene's own
+            for (uint r = 0u; r < 3u; ++r)
+                toWorld[r] = instanceRow(hit.instance, 3u + r);
+            tri.v0.xyz = placePoint(toWorld, tri.v0.xyz);
+            tri.v1.xyz = placePoint(toWorld, tri.v1.xyz);
+            tri.v2.xyz = placePoint(toWorld, tri.v2.xyz);
+        }
         float b1 = hit.b12.x, b2 = hit.b12.y, b0 = 1.0 - b1 - b2;
         s.position = b0 * tri.v0.xyz + b1 * tri.v1.xyz + b2 * tri.v2.xyz;
         s.geometricNormal = normalize(cross(tri.v1.xyz - tri.v0.xyz, tri.v2.xyz - tri.v0.xyz));
@@ -96,6 +115,11 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         if (HAS_VERTEX_NORMALS || HAS_TEXTURES || HAS_SURFACE_MAPS) {
             GpuTriangleShading sh = triangleShadingAt(hit.index);
             if (HAS_VERTEX_NORMALS && shadingHasNormals(sh)) {
+                if (instanced) {
+                    sh.n0.xyz = placeNormal(toWorld, sh.n0.xyz);
+                    sh.n1.xyz = placeNormal(toWorld, sh.n1.xyz);
+                    sh.n2.xyz = placeNormal(toWorld, sh.n2.xyz);
+                }
                 s.shadingNormal = normalize(b0 * sh.n0.xyz + b1 * sh.n1.xyz + b2 * sh.n2.xyz);
                 s.smoothed = true;
                 if (dot(dir, s.geometricNormal) < 0.0)
@@ -113,6 +137,8 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
             triangleTangents(tri.v1.xyz - tri.v0.xyz, tri.v2.xyz - tri.v0.xyz, d1, d2, s.dpdu,
                              s.dpdv);
         s.material = triangleMaterial(tri);
+        if (instanced && instanceRow(hit.instance, 6u).y >= 0.0) // the placement's material
+            s.material = indexFromFloat(instanceRow(hit.instance, 6u).y);
     }
     return s;
 }

@@ -8,6 +8,7 @@ layout(constant_id = kSpecKinds) const uint KINDS = 0xFFu;
 const bool HAS_SPHERES = (KINDS & (1u << kKindSphere)) != 0u;
 const bool HAS_PLANES = (KINDS & (1u << kKindPlane)) != 0u;
 const bool HAS_TRIANGLES = (KINDS & (1u << kKindTriangle)) != 0u;
+const bool HAS_INSTANCES = (KINDS & (1u << kKindInstance)) != 0u;
 layout(constant_id = kSpecHasReflection) const bool HAS_REFLECTION = true;
 layout(constant_id = kSpecHasTransmission) const bool HAS_TRANSMISSION = true;
 layout(constant_id = kSpecHasTextures) const bool HAS_TEXTURES = true;
@@ -74,6 +75,12 @@ layout(std430, set = 0, binding = kBindingGridEntries) readonly buffer GridEntry
 layout(std430, set = 0, binding = kBindingCellBoxes) readonly buffer CellBoxBuffer {
     uvec4 cellBoxArray[];
 };
+layout(std430, set = 0, binding = kBindingInstances) readonly buffer InstanceBuffer {
+    GpuInstance instanceArray[];
+};
+layout(std430, set = 0, binding = kBindingMeshGrids) readonly buffer MeshGridBuffer {
+    GpuMeshGrid meshGridArray[];
+};
 layout(set = 0, binding = kBindingCellStartTexels) uniform usamplerBuffer cellStartTexels;
 layout(set = 0, binding = kBindingCellPrimitiveTexels) uniform usamplerBuffer cellPrimitiveTexels;
 layout(set = 0, binding = kBindingSphereTexels) uniform samplerBuffer sphereTexels;
@@ -82,6 +89,7 @@ layout(set = 0, binding = kBindingImageTexels) uniform samplerBuffer imageTexels
 layout(set = 0, binding = kBindingTriangleShadingTexels) uniform samplerBuffer shadingTexels;
 layout(set = 0, binding = kBindingGridEntryTexels) uniform usamplerBuffer gridEntryTexels;
 layout(set = 0, binding = kBindingCellBoxTexels) uniform usamplerBuffer cellBoxTexels;
+layout(set = 0, binding = kBindingInstanceTexels) uniform samplerBuffer instanceTexels;
 
 layout(push_constant) uniform FrameBlock { GpuFrameParams frame; };
 
@@ -128,6 +136,15 @@ GpuTriangleShading triangleShadingAt(uint i) {
             texelFetch(shadingTexels, int(5u * i + 4u)));
     return shadingArray[i];
 }
+// An instance's way into its prototype's space (rows 0-2) and its info; the way out (rows 3-5)
+// only shading needs.
+vec4 instanceRow(uint i, uint row) {
+    if (TEXEL_BUFFERS)
+        return texelFetch(instanceTexels, int(7u * i + row));
+    GpuInstance g = instanceArray[i];
+    return row == 0u ? g.toObject0 : row == 1u ? g.toObject1 : row == 2u ? g.toObject2
+         : row == 3u ? g.toWorld0 : row == 4u ? g.toWorld1 : row == 5u ? g.toWorld2 : g.info;
+}
 vec4 textureTexel(uint i) {
     return TEXEL_BUFFERS ? texelFetch(imageTexels, int(i)) : texelArray[i];
 }
@@ -145,6 +162,9 @@ GpuMaterial materialAt(uint i) {
 }
 GpuLight lightAt(uint i) {
     return lightArray[i];
+}
+GpuMeshGrid meshGridAt(uint i) {
+    return meshGridArray[i];
 }
 GpuTexture textureAt(uint i) {
     return textureArray[i];

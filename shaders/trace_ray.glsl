@@ -16,13 +16,14 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
                 hit.t = t;
                 hit.kind = kKindPlane;
                 hit.index = i;
+                hit.instance = kNoInstance;
 #if TRACE_RAY_ANY_HIT
                 return true;
 #endif
             }
         }
     }
-    if (HAS_SPHERES || HAS_TRIANGLES) {
+    if (HAS_SPHERES || HAS_TRIANGLES || HAS_INSTANCES) {
         vec3 invDir = 1.0 / dir;
         float tEnter, tExit;
         if (clipToGrid(origin, invDir, tEnter, tExit) && tEnter < hit.t) {
@@ -59,22 +60,25 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
                     first = cellStartAt(cell);
                 }
                 uint end = cellStartAt(cell + 1u);
+                uint cellFirst = first;
                 if (RESUMABLE) {
-                    uint cellFirst = first;
                     first = min(first + resume.skipTests, end); // tested in an earlier dispatch
                     resume.skipTests = 0u;
                     // The cell's pass, the primitive loop's extra pass, and the voxel-map
                     // descent: at most one level per bit of voxels.w, plus its extra pass.
                     chargeBudget(ADAPTIVE_GRID ? 4u + uint(header.voxels.w) : 4u);
+                    // A test costs one: the cell's share of the budget is known now. (An
+                    // instance's costs its walk: the loop below charges as it goes.)
                     uint left = budgetLeft();
-                    if (end - first > left) {
+                    if (!HAS_INSTANCES && end - first > left) {
                         end = first + left;
                         resume.interrupted = true;
                         resume.cell = ADAPTIVE_GRID ? entryVoxel : walk.cell;
                         resume.t = ADAPTIVE_GRID ? vec3(entryT, 0.0, 0.0) : walk.tNext;
                         resume.skipTests = end - cellFirst;
                     }
-                    chargeBudget(end - first);
+                    if (!HAS_INSTANCES)
+                        chargeBudget(end - first);
                 }
                 uint64_t testsStart = PROFILE_WALK_DETAIL ? profileClock() : 0ul;
 #if TRACE_RAY_ANY_HIT
@@ -82,7 +86,21 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
 #else
                 for (uint k = first; k < end; ++k) {
 #endif
-                    testPrimitive(cellPrimitiveAt(k), origin, dir, wray, hit);
+                    if (RESUMABLE && HAS_INSTANCES && budgetLeft() < kInstanceWalkReserve) {
+                        // Not enough left for an instance's walk: go on from here next time.
+                        resume.interrupted = true;
+                        resume.cell = ADAPTIVE_GRID ? entryVoxel : walk.cell;
+                        resume.t = ADAPTIVE_GRID ? vec3(entryT, 0.0, 0.0) : walk.tNext;
+                        resume.skipTests = k - cellFirst;
+                        break;
+                    }
+                    // The test, and the extra passes of an instance walk's two loops, which
+                    // the subgroup runs for every test where some lane tests an instance or
+                    // none does (masked; its lanes charge their own walks' passes).
+                    if (RESUMABLE && HAS_INSTANCES)
+                        chargeBudget(4u);
+                    testPrimitive(cellPrimitiveAt(k), origin, dir, wray, TRACE_RAY_ANY_HIT != 0,
+                                  hit);
                 }
                 if (PROFILE_WALK_DETAIL)
                     profileAdd(kPhasePrimitiveTests, testsStart);
@@ -112,12 +130,13 @@ bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
     hit.kind = kKindNone;
     hit.index = 0u;
     hit.b12 = vec2(0.0);
+    hit.instance = kNoInstance;
     WalkResume resume = WalkResume(false, ivec3(0), vec3(0.0), 0u, false);
     uint walk = 0u;
     if (RESUMABLE) {
         walk = gWalkCount++;
         if (walk < gResume.progress.x) {
-            hit = unpackHit(walkLog[walkLogEntry(walk)]);
+            hit = loggedHit(walk);
             return hit.kind != kKindNone;
         }
         if (gOutOfBudget || gLogFull)
@@ -128,7 +147,7 @@ bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
             resume.cell = ivec3(gResume.walker.xyz);
             resume.t = uintBitsToFloat(gResume.walkerT.xyz);
             resume.skipTests = gResume.progress.z;
-            Hit best = unpackHit(gResume.bestHit);
+            Hit best = unpackHit(gResume.bestHit, gResume.walker.w);
             if (best.kind != kKindNone)
                 hit = best;
         }

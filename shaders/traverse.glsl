@@ -1,51 +1,45 @@
-// Finding what a ray hits: infinite planes by brute force, everything else through the regular
-// grid with 3D-DDA (Amanatides & Woo 1987). One walk (trace_ray.glsl) serves both closest-hit
-// rays and any-hit (shadow) rays.
+// Finding what a ray hits: infinite planes by brute force, everything else through the grid
+// (regular, with 3D-DDA, Amanatides & Woo 1987, or adaptive). One walk (trace_ray.glsl) serves
+// both closest-hit rays and any-hit (shadow) rays. An instance in the grid is a second walk: the
+// ray taken into its prototype's space through the prototype's own regular grid.
 
 struct Hit {
     float t;
-    uint kind;  // kKindSphere, kKindTriangle, kKindPlane or kKindNone
-    uint index; // within its kind's array
-    vec2 b12;   // triangle barycentrics of p1 and p2
+    uint kind;     // kKindSphere, kKindTriangle, kKindPlane or kKindNone
+    uint index;    // within its kind's array
+    vec2 b12;      // triangle barycentrics of p1 and p2
+    uint instance; // a triangle of a prototype: the instance it was hit in; else kNoInstance
 };
+const uint kNoInstance = 0xFFFFFFFFu;
 
 #include "resume.glsl"
 
-// Tests the primitive with grid id `id` and records it in `hit` when closer than hit.t.
-void testPrimitive(uint id, vec3 origin, vec3 dir, WatertightRay wray, inout Hit hit) {
+// Tests triangle `tri` (of the triangle array) and records it in `hit` when closer than hit.t.
+bool testTriangle(uint tri, vec3 origin, vec3 dir, WatertightRay wray, inout Hit hit) {
     float t;
-    if (HAS_SPHERES && id < header.idEnd[kKindSphere]) {
-        uint sphere = id; // the first kind: its ids start at 0
-        if (intersectSphere(origin, dir, sphereCenterRadius(sphere), hit.t, t)) {
-            hit.t = t;
-            hit.kind = kKindSphere;
-            hit.index = sphere;
-        }
-    } else if (HAS_TRIANGLES) { // the last kind: every id past the spheres
-        // primitiveIdFirst(header.idEnd, kKindTriangle), written with a constant index: lavapipe
-        // then loads one word, not the whole idEnd vector, per test (that cost 7% on objects).
-        uint tri = id - header.idEnd[kKindTriangle - 1u];
-        vec2 b12;
-        vec3 p0 = triangleVertex(tri, 0u), p1 = triangleVertex(tri, 1u);
-        vec3 p2 = triangleVertex(tri, 2u);
-        bool hitTriangle;
-        if (MOLLER_TRUMBORE)
-            hitTriangle = intersectTriangleMollerTrumbore(origin, dir, p0, p1, p2, hit.t, t, b12);
-        else
-            hitTriangle = intersectTriangle(origin, wray, p0, p1, p2, hit.t, t, b12);
-        if (hitTriangle) {
-            hit.t = t;
-            hit.kind = kKindTriangle;
-            hit.index = tri;
-            hit.b12 = b12;
-        }
+    vec2 b12;
+    vec3 p0 = triangleVertex(tri, 0u), p1 = triangleVertex(tri, 1u);
+    vec3 p2 = triangleVertex(tri, 2u);
+    bool hitTriangle;
+    if (MOLLER_TRUMBORE)
+        hitTriangle = intersectTriangleMollerTrumbore(origin, dir, p0, p1, p2, hit.t, t, b12);
+    else
+        hitTriangle = intersectTriangle(origin, wray, p0, p1, p2, hit.t, t, b12);
+    if (hitTriangle) {
+        hit.t = t;
+        hit.kind = kKindTriangle;
+        hit.index = tri;
+        hit.b12 = b12;
+        hit.instance = kNoInstance;
     }
+    return hitTriangle;
 }
 
-// Slab test against the grid's box; returns the parametric range inside it.
-bool clipToGrid(vec3 origin, vec3 invDir, out float tEnter, out float tExit) {
-    vec3 t0 = (header.gridMin.xyz - origin) * invDir;
-    vec3 t1 = (header.gridMax.xyz - origin) * invDir;
+// Slab test against a box; returns the parametric range inside it.
+bool clipToBox(vec3 boxMin, vec3 boxMax, vec3 origin, vec3 invDir, out float tEnter,
+               out float tExit) {
+    vec3 t0 = (boxMin - origin) * invDir;
+    vec3 t1 = (boxMax - origin) * invDir;
     vec3 tNear = min(t0, t1), tFar = max(t0, t1);
     tEnter = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
     tExit = min(min(tFar.x, tFar.y), tFar.z);
@@ -60,31 +54,108 @@ struct GridWalk {
     vec3 tDelta;
 };
 
-GridWalk startWalk(vec3 origin, vec3 dir, vec3 invDir, float tEnter) {
+GridWalk startGridWalk(vec3 gridMin, vec3 cellSize, ivec3 res, vec3 origin, vec3 dir,
+                       vec3 invDir, float tEnter) {
     GridWalk w;
-    ivec3 res = ivec3(header.gridRes.xyz);
     vec3 entry = origin + tEnter * dir;
-    w.cell = clamp(ivec3(floor((entry - header.gridMin.xyz) / header.cellSize.xyz)), ivec3(0),
-                   res - 1);
+    w.cell = clamp(ivec3(floor((entry - gridMin) / cellSize)), ivec3(0), res - 1);
     w.step = ivec3(sign(dir));
-    vec3 nextFace = header.gridMin.xyz + (vec3(w.cell) + max(vec3(w.step), vec3(0.0))) *
-                                             header.cellSize.xyz;
+    vec3 nextFace = gridMin + (vec3(w.cell) + max(vec3(w.step), vec3(0.0))) * cellSize;
     w.tNext = mix((nextFace - origin) * invDir, vec3(kInfinity), equal(w.step, ivec3(0)));
-    w.tDelta = mix(header.cellSize.xyz * abs(invDir), vec3(kInfinity), equal(w.step, ivec3(0)));
+    w.tDelta = mix(cellSize * abs(invDir), vec3(kInfinity), equal(w.step, ivec3(0)));
     return w;
 }
 
 // Advances to the next cell; false when the ray leaves the grid.
-bool stepWalk(inout GridWalk w) {
+bool stepGridWalk(inout GridWalk w, ivec3 res) {
     int axis = w.tNext.x < w.tNext.y ? (w.tNext.x < w.tNext.z ? 0 : 2)
                                      : (w.tNext.y < w.tNext.z ? 1 : 2);
     w.cell[axis] += w.step[axis];
     w.tNext[axis] += w.tDelta[axis];
-    return w.cell[axis] >= 0 && w.cell[axis] < int(header.gridRes[axis]);
+    return w.cell[axis] >= 0 && w.cell[axis] < res[axis];
+}
+
+uint gridCellIndex(ivec3 cell, uvec3 res) {
+    return uint(cell.x) + res.x * (uint(cell.y) + res.y * uint(cell.z));
+}
+
+// Instance `inst`: the ray in its prototype's space, where t is the same (the placement is a
+// similarity; the direction there is not unit length, which the triangle tests do not need),
+// walks the prototype's regular grid. A hit is a triangle hit of this instance. With anyHit the
+// walk stops at the first.
+void testInstance(uint inst, vec3 origin, vec3 dir, bool anyHit, inout Hit hit) {
+    vec4 r0 = instanceRow(inst, 0u), r1 = instanceRow(inst, 1u), r2 = instanceRow(inst, 2u);
+    vec3 o = vec3(dot(r0.xyz, origin) + r0.w, dot(r1.xyz, origin) + r1.w,
+                  dot(r2.xyz, origin) + r2.w);
+    vec3 d = vec3(dot(r0.xyz, dir), dot(r1.xyz, dir), dot(r2.xyz, dir));
+    GpuMeshGrid grid = meshGridAt(indexFromFloat(instanceRow(inst, 6u).x));
+    vec3 invD = 1.0 / d;
+    float tEnter, tExit;
+    if (!clipToBox(grid.gridMin.xyz, grid.gridMax.xyz, o, invD, tEnter, tExit) ||
+        tEnter >= hit.t)
+        return;
+    WatertightRay wray = makeWatertightRay(d);
+    ivec3 res = ivec3(grid.res.xyz);
+    GridWalk walk = startGridWalk(grid.gridMin.xyz, grid.cellSize.xyz, res, o, d, invD, tEnter);
+    uint firstCell = meshGridFirstCell(grid), cells = 0u, tests = 0u;
+    bool walking = true;
+    while (walking) {
+        float tCellExit = min(min(walk.tNext.x, walk.tNext.y), walk.tNext.z);
+        uint cell = firstCell + gridCellIndex(walk.cell, grid.res.xyz);
+        uint first = cellStartAt(cell), end = cellStartAt(cell + 1u);
+        bool found = false;
+        for (uint k = first; k < end && !(anyHit && found); ++k) {
+            if (testTriangle(cellPrimitiveAt(k), o, d, wray, hit)) {
+                hit.instance = inst;
+                found = true;
+            }
+        }
+        ++cells;
+        tests += end - first;
+        // As in the scene's grid: a hit counts once the walk has reached its cell.
+        walking = (anyHit ? !found : hit.t > tCellExit) && tCellExit < tExit &&
+                  stepGridWalk(walk, res);
+    }
+    chargeBudget(8u + 4u * cells + tests); // as trace_ray.glsl charges the scene's cells
+}
+
+// Tests the primitive with grid id `id` and records it in `hit` when closer than hit.t.
+void testPrimitive(uint id, vec3 origin, vec3 dir, WatertightRay wray, bool anyHit,
+                   inout Hit hit) {
+    float t;
+    if (HAS_SPHERES && id < header.idEnd[kKindSphere]) {
+        uint sphere = id; // the first kind: its ids start at 0
+        if (intersectSphere(origin, dir, sphereCenterRadius(sphere), hit.t, t)) {
+            hit.t = t;
+            hit.kind = kKindSphere;
+            hit.index = sphere;
+            hit.instance = kNoInstance;
+        }
+    } else if (HAS_TRIANGLES && (!HAS_INSTANCES || id < header.idEnd[kKindTriangle])) {
+        // primitiveIdFirst(header.idEnd, kKindTriangle), written with a constant index: lavapipe
+        // then loads one word, not the whole idEnd vector, per test (that cost 7% on objects).
+        testTriangle(id - header.idEnd[kKindTriangle - 1u], origin, dir, wray, hit);
+    } else if (HAS_INSTANCES) { // the last kind
+        testInstance(id - header.idEnd[kKindInstance - 1u], origin, dir, anyHit, hit);
+    }
+}
+
+// The scene's grid: its box, and its DDA when it is regular.
+bool clipToGrid(vec3 origin, vec3 invDir, out float tEnter, out float tExit) {
+    return clipToBox(header.gridMin.xyz, header.gridMax.xyz, origin, invDir, tEnter, tExit);
+}
+
+GridWalk startWalk(vec3 origin, vec3 dir, vec3 invDir, float tEnter) {
+    return startGridWalk(header.gridMin.xyz, header.cellSize.xyz, ivec3(header.gridRes.xyz),
+                         origin, dir, invDir, tEnter);
+}
+
+bool stepWalk(inout GridWalk w) {
+    return stepGridWalk(w, ivec3(header.gridRes.xyz));
 }
 
 uint cellIndex(ivec3 cell) {
-    return uint(cell.x) + header.gridRes.x * (uint(cell.y) + header.gridRes.y * uint(cell.z));
+    return gridCellIndex(cell, header.gridRes.xyz);
 }
 
 // The adaptive grid's cell that holds voxel v: down the voxel map from v's top cell.

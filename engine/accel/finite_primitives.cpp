@@ -19,10 +19,40 @@ Aabb triangleBounds(const Triangle &t) {
 
 } // namespace
 
+Aabb prototypeBounds(const MeshPrototype &prototype) {
+    Aabb b;
+    for (const Triangle &t : prototype.triangles)
+        b.grow(triangleBounds(t));
+    return b;
+}
+
+Aabb placedBounds(const Instance &instance, const Aabb &objectBounds) {
+    Aabb b;
+    if (objectBounds.empty())
+        return b;
+    for (int corner = 0; corner < 8; ++corner) {
+        glm::dvec3 p((corner & 1) ? objectBounds.max.x : objectBounds.min.x,
+                     (corner & 2) ? objectBounds.max.y : objectBounds.min.y,
+                     (corner & 4) ? objectBounds.max.z : objectBounds.min.z);
+        b.grow(instance.toWorld(p));
+    }
+    return b;
+}
+
+FinitePrimitives::FinitePrimitives(const Scene &scene) : scene_(scene), ids_(scene) {
+    std::vector<Aabb> objectBounds;
+    for (const MeshPrototype &prototype : scene.prototypes)
+        objectBounds.push_back(prototypeBounds(prototype));
+    for (const Instance &instance : scene.instances)
+        instanceBounds_.push_back(placedBounds(instance, objectBounds.at(instance.prototype)));
+}
+
 Aabb FinitePrimitives::bounds(uint32_t id) const {
     PrimitiveIds::Decoded p = ids_.decode(id);
     if (p.kind == gpu::kKindSphere)
         return sphereBounds(scene_.spheres[p.index]);
+    if (p.kind == gpu::kKindInstance)
+        return instanceBounds_[p.index];
     return triangleBounds(scene_.triangles[p.index]);
 }
 
@@ -32,6 +62,11 @@ bool FinitePrimitives::overlapsBox(uint32_t id, const glm::dvec3 &boxMin,
     if (p.kind == gpu::kKindSphere) {
         const Sphere &s = scene_.spheres[p.index];
         return sphereOverlapsBox(s.center, double(s.radius), boxMin, boxMax);
+    }
+    if (p.kind == gpu::kKindInstance) {
+        const Aabb &b = instanceBounds_[p.index];
+        return glm::all(glm::lessThanEqual(b.min, boxMax)) &&
+               glm::all(glm::lessThanEqual(boxMin, b.max));
     }
     const Triangle &t = scene_.triangles[p.index];
     return triangleOverlapsBox(t.p[0], t.p[1], t.p[2], boxMin, boxMax);

@@ -3,6 +3,7 @@
 // with its bounds and an exact test against a box. The one place in the grid that knows the
 // kinds, so a builder walks ids and never a kind's own array.
 #include <cstdint>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -14,16 +15,23 @@ namespace prism {
 
 class FinitePrimitives {
 public:
-    explicit FinitePrimitives(const Scene &scene) : scene_(scene), ids_(scene) {}
+    explicit FinitePrimitives(const Scene &scene);
 
     uint32_t count() const { return ids_.count(); }
     Aabb bounds(uint32_t id) const;
-    // Closed sets: touching counts as overlap.
+    // Closed sets: touching counts as overlap. An instance counts as its box (in world space,
+    // the bounds of its prototype's box placed), which holds every triangle of the placement.
     bool overlapsBox(uint32_t id, const glm::dvec3 &boxMin, const glm::dvec3 &boxMax) const;
 
 private:
     const Scene &scene_;
     PrimitiveIds ids_;
+    std::vector<Aabb> instanceBounds_; // by instance
 };
+
+// The bounds of a prototype's triangles in its own space.
+Aabb prototypeBounds(const MeshPrototype &prototype);
+// The world box of a placed box: the bounds of its eight corners placed.
+Aabb placedBounds(const Instance &instance, const Aabb &objectBounds);
 
 } // namespace prism

@@ -67,6 +67,10 @@ struct Grid {
     uint32_t maxPerCell = 0; // the fullest cell's count, for --stats and the benchmarks
     std::string choice;      // Auto only: which grid it chose, and the counts it chose by
 
+    // One regular grid per Scene::prototypes entry, over its triangles in its own space (ids:
+    // the prototype's triangle indices): the second level under the instances of this grid.
+    std::vector<Grid> meshGrids;
+
     bool adaptive() const { return !entries.empty(); }
     // Cells holding primitive lists.
     uint64_t cellCount() const { return adaptive() ? cellBoxes.size() : topCellCount(); }
@@ -77,10 +81,13 @@ struct Grid {
     // their sum of cells.
     glm::ivec3 voxelResolution() const { return resolution * (1 << shift); }
     glm::vec3 voxelSize() const { return cellSize / float(1u << shift); }
-    // Bytes the grid takes on the GPU.
+    // Bytes the grid takes on the GPU, the mesh grids' included.
     uint64_t bytes() const {
-        return 4 * (cellStart.size() + cellPrimitives.size() + entries.size()) +
-               16 * cellBoxes.size();
+        uint64_t total =
+            4 * (cellStart.size() + cellPrimitives.size() + entries.size()) + 16 * cellBoxes.size();
+        for (const Grid &mesh : meshGrids)
+            total += mesh.bytes();
+        return total;
     }
     uint32_t cellIndex(glm::ivec3 cell) const {
         return uint32_t(cell.x + resolution.x * (cell.y + resolution.y * cell.z));

@@ -135,16 +135,32 @@ Grid buildOneGrid(const Scene &scene, const GridOptions &options) {
     return grid;
 }
 
+// A prototype's grid: regular, at the default density, whatever the scene's grid is (a single
+// mesh is spread evenly enough for one; --grid chooses the level the instances are in).
+std::vector<Grid> buildMeshGrids(const Scene &scene) {
+    std::vector<Grid> grids;
+    for (const MeshPrototype &prototype : scene.prototypes) {
+        Scene mesh;
+        mesh.triangles = prototype.triangles;
+        grids.push_back(buildOneGrid(mesh, GridOptions{GridOptions::Mode::Regular}));
+    }
+    return grids;
+}
+
 } // namespace
 
 Grid buildGrid(const Scene &scene, const GridOptions &options) {
-    if (options.mode != GridOptions::Mode::Auto)
-        return buildOneGrid(scene, options);
-    return chooseGrid(scene, [&](GridOptions::Mode mode) {
+    std::vector<Grid> meshGrids = buildMeshGrids(scene);
+    auto build = [&](GridOptions::Mode mode) {
         GridOptions one = options;
         one.mode = mode;
-        return buildOneGrid(scene, one);
-    });
+        Grid grid = buildOneGrid(scene, one);
+        grid.meshGrids = meshGrids;
+        return grid;
+    };
+    if (options.mode != GridOptions::Mode::Auto)
+        return build(options.mode);
+    return chooseGrid(scene, build);
 }
 
 } // namespace prism

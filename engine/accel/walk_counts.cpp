@@ -14,20 +14,58 @@
 namespace prism {
 namespace {
 
+// What counting found so far.
+struct Tally {
+    uint64_t cells = 0;
+    uint64_t tests = 0;
+};
+
+bool intersectTriangle(const Triangle &tri, const Ray &ray, const reference::WatertightRay &wray,
+                       double tMax, double &t) {
+    glm::dvec2 b12;
+    return reference::intersectTriangle(ray, wray, glm::dvec3(tri.p[0]), glm::dvec3(tri.p[1]),
+                                        glm::dvec3(tri.p[2]), tMax, t, b12);
+}
+
+// An instance's nearest hit closer than tMax: the ray in its prototype's space (where t is the
+// same: the placement is a similarity) through the prototype's grid, as the tracer walks it.
+// The direction there is not unit length; the watertight test does not need it to be.
+bool intersectInstance(const Scene &scene, const Grid &grid, const Instance &instance,
+                       const Ray &ray, double tMax, double &t, Tally &tally) {
+    const MeshPrototype &prototype = scene.prototypes[instance.prototype];
+    const Grid &meshGrid = grid.meshGrids[instance.prototype];
+    glm::dmat3 toObject = glm::transpose(instance.rotation) / instance.scale;
+    Ray local{toObject * (ray.origin - instance.translation), toObject * ray.dir};
+    reference::WatertightRay wray = reference::makeWatertightRay(local.dir);
+    double nearest = tMax;
+    walkGrid(meshGrid, local.origin, local.dir, tMax, [&](uint32_t cell, double, double tExit) {
+        ++tally.cells;
+        for (uint32_t k = meshGrid.cellStart[cell]; k < meshGrid.cellStart[cell + 1]; ++k) {
+            ++tally.tests;
+            double tHit;
+            if (intersectTriangle(prototype.triangles[meshGrid.cellPrimitives[k]], local, wray,
+                                  nearest, tHit))
+                nearest = tHit;
+        }
+        return nearest > tExit;
+    });
+    t = nearest;
+    return nearest < tMax;
+}
+
 // The nearest hit of primitive `id` closer than tMax, with the reference's exact tests.
-bool intersectId(const Scene &scene, const PrimitiveIds &ids, uint32_t id, const Ray &ray,
-                 const reference::WatertightRay &wray, double tMax, double &t) {
+bool intersectId(const Scene &scene, const Grid &grid, const PrimitiveIds &ids, uint32_t id,
+                 const Ray &ray, const reference::WatertightRay &wray, double tMax, double &t,
+                 Tally &tally) {
     PrimitiveIds::Decoded d = ids.decode(id);
     if (d.kind == gpu::kKindSphere) {
         const Sphere &s = scene.spheres[d.index];
         return reference::intersectSphere(ray, glm::dvec3(s.center), double(s.radius), tMax, t);
     }
-    if (d.kind == gpu::kKindTriangle) {
-        const Triangle &tri = scene.triangles[d.index];
-        glm::dvec2 b12;
-        return reference::intersectTriangle(ray, wray, glm::dvec3(tri.p[0]), glm::dvec3(tri.p[1]),
-                                            glm::dvec3(tri.p[2]), tMax, t, b12);
-    }
+    if (d.kind == gpu::kKindTriangle)
+        return intersectTriangle(scene.triangles[d.index], ray, wray, tMax, t);
+    if (d.kind == gpu::kKindInstance)
+        return intersectInstance(scene, grid, scene.instances[d.index], ray, tMax, t, tally);
     // A new finite kind needs its test here (docs/design.md, "Adding a primitive").
     throw Error("countWalks has no test for primitive kind " + std::to_string(d.kind));
 }
@@ -41,7 +79,7 @@ WalkCounts countWalks(const Scene &scene, const Grid &grid, double aspect, int c
     int width = columns, height = std::max(1, int(double(columns) / aspect + 0.5));
     CameraFrame frame = makeCameraFrame(scene.camera, width, height);
     WalkCounts counts;
-    uint64_t cells = 0, tests = 0;
+    Tally tally;
     double stopAbove = stopAboveTestsPerRay * double(width) * double(height);
     for (int y = 0; y < height && !counts.stopped; ++y)
         for (int x = 0; x < width && !counts.stopped; ++x) {
@@ -49,22 +87,23 @@ WalkCounts countWalks(const Scene &scene, const Grid &grid, double aspect, int c
             reference::WatertightRay wray = reference::makeWatertightRay(ray.dir);
             double nearest = std::numeric_limits<double>::infinity();
             walkGrid(grid, ray.origin, ray.dir, nearest, [&](uint32_t cell, double, double tExit) {
-                ++cells;
+                ++tally.cells;
                 for (uint32_t k = grid.cellStart[cell]; k < grid.cellStart[cell + 1]; ++k) {
-                    ++tests;
+                    ++tally.tests;
                     double t;
-                    if (intersectId(scene, ids, grid.cellPrimitives[k], ray, wray, nearest, t))
+                    if (intersectId(scene, grid, ids, grid.cellPrimitives[k], ray, wray, nearest, t,
+                                    tally))
                         nearest = t;
                 }
                 return nearest > tExit; // on until the nearest hit is in a cell reached
             });
             ++counts.rays;
-            counts.stopped = double(tests) > stopAbove;
+            counts.stopped = double(tally.tests) > stopAbove;
         }
     // Per ray of the whole lattice: where counting stopped, the rays not walked count zero.
     double rays = double(width) * double(height);
-    counts.cellsPerRay = double(cells) / rays;
-    counts.testsPerRay = double(tests) / rays;
+    counts.cellsPerRay = double(tally.cells) / rays;
+    counts.testsPerRay = double(tally.tests) / rays;
     return counts;
 }
 

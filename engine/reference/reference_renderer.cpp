@@ -15,6 +15,7 @@
 #include "reference/scene_query.h"
 #include "reference/surface_reference.h"
 #include "reference/trace_reference.h"
+#include "scene/instance_flattening.h"
 #include "scene/scene_origin.h"
 
 namespace prism {
@@ -95,15 +96,16 @@ glm::dvec3 tracePixelSample(const Scene &scene, const CameraFrame &frame, int px
 
 RenderedImage renderReference(const Scene &given, const RenderSettings &settings,
                               const std::function<void(double)> &progress) {
-    validate(given, settings);
     // Ray offsets are relative to |P| (as on the GPU), so the reference too works relative to
-    // the camera; in double the move itself costs nothing measurable (scene_origin.h).
+    // the camera; in double the move itself costs nothing measurable (scene_origin.h). Instances
+    // become plain triangles: the reference has one level, the tracer two.
     std::optional<Scene> moved;
-    if (given.camera.eye != glm::dvec3(0.0)) {
-        moved = given;
+    if (given.camera.eye != glm::dvec3(0.0) || !given.instances.empty()) {
+        moved = flattenInstances(given);
         moveOrigin(*moved, given.camera.eye);
     }
     const Scene &scene = moved ? *moved : given;
+    validate(scene, settings);
     RenderedImage image;
     image.width = settings.width;
     image.height = settings.height;

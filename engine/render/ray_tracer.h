@@ -93,6 +93,8 @@ public:
 
     const vk::Image &accumulation() const { return accum_; }
     const TracerFeatures &features() const { return features_; }
+    // The scene's arrays on the device, as uploaded (--stats: what instancing saves shows here).
+    std::vector<ArrayBytes> sceneArrayBytes() const { return arrayBytes(scene_); }
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
 

@@ -29,7 +29,8 @@ void afterEarlierDispatches(VkCommandBuffer commands) {
 void RayTracer::startResuming() {
     vkDeviceWaitIdle(context_.device());
     resumePlan_ = planResume(width_, height_, features_.maxDepth, lightCount_, features_.writeAov,
-                             resumeMemoryBytes_);
+                             resumeMemoryBytes_, features_.has(gpu::kKindInstance),
+                             (features_.reflection ? 1u : 0u) + (features_.transmission ? 2u : 0u));
     resumeRecords_ =
         vk::Buffer(context_, resumePlan_.recordBytes(),
                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);

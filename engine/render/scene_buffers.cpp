@@ -119,6 +119,10 @@ const ArrayBinding kArrays[] = {
      kBindingGridEntryTexels, kUintTexels},
     {&B::cellBoxes, bytesOf<&P::cellBoxes>, "grid cell box", kBindingCellBoxes,
      kBindingCellBoxTexels, kUvec4Texels},
+    {&B::instances, bytesOf<&P::instances>, "instance", kBindingInstances, kBindingInstanceTexels,
+     kVec4Texels},
+    {&B::meshGrids, bytesOf<&P::meshGrids>, "mesh grid", kBindingMeshGrids, kNoTexelBinding,
+     kStorageOnly},
 };
 
 } // namespace
@@ -142,6 +146,13 @@ void bindScene(vk::ComputePipeline &pipeline, const SceneBuffers &b, const Array
         if (a.texelBinding != kNoTexelBinding)
             pipeline.bindTexelBuffer(a.texelBinding, array.texels.handle());
     }
+}
+
+std::vector<ArrayBytes> arrayBytes(const SceneBuffers &b) {
+    std::vector<ArrayBytes> bytes{{"header", b.header.size()}};
+    for (const ArrayBinding &a : kArrays)
+        bytes.push_back({a.what, (b.*a.array).buffer.size()});
+    return bytes;
 }
 
 std::vector<VkDescriptorType> traceDescriptorTypes() {

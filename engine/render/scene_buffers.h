@@ -42,12 +42,22 @@ struct SceneBuffers {
     SceneArray texels;
     SceneArray gridEntries;
     SceneArray cellBoxes;
+    SceneArray instances;
+    SceneArray meshGrids;
 };
 
 // Uploads every array. An array larger than the binding it is read through may hold is refused
 // with a prism::Error naming the array, the device and the limit, never truncated.
 SceneBuffers uploadScene(const vk::Context &context, vk::CommandRunner &runner,
                          const PackedScene &packed, const ArrayLimits &limits);
+
+// What one array takes on the device: its buffer's size (an empty array's is one 16-byte
+// element), named as in errors ("triangle", "instance", ...).
+struct ArrayBytes {
+    const char *what;
+    uint64_t bytes;
+};
+std::vector<ArrayBytes> arrayBytes(const SceneBuffers &buffers);
 
 // Descriptor types of every binding of trace.comp, by binding number: the images, the storage
 // buffers, and a uniform texel buffer for each array read as texels.

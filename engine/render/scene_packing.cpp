@@ -1,5 +1,7 @@
 #include "render/scene_packing.h"
 
+#include <string>
+
 #include "core/error.h"
 #include "scene/primitive_ids.h"
 
@@ -12,6 +14,48 @@ float indexAsFloat(uint32_t index) {
     if (index >= (1u << 24))
         throw Error("scene has more than 16,777,216 materials");
     return static_cast<float>(index);
+}
+
+// Row r of the 3x4 matrix p -> offset + linear * p.
+glm::vec4 affineRow(const glm::dmat3 &linear, const glm::dvec3 &offset, int r) {
+    return glm::vec4(float(linear[0][r]), float(linear[1][r]), float(linear[2][r]),
+                     float(offset[r]));
+}
+
+// The placements, and each prototype's grid after the scene grid in the cell arrays, listing
+// triangles by their place in the triangle array (firstTriangle[1 + prototype] onwards).
+void packInstances(const Scene &scene, const Grid &grid, const std::vector<uint32_t> &firstTriangle,
+                   PackedScene &packed) {
+    if (grid.meshGrids.size() != scene.prototypes.size())
+        throw Error("the grid has " + std::to_string(grid.meshGrids.size()) + " mesh grids for " +
+                    std::to_string(scene.prototypes.size()) + " prototypes");
+    for (size_t m = 0; m < grid.meshGrids.size(); ++m) {
+        const Grid &g = grid.meshGrids[m];
+        uint64_t firstCell = packed.cellStart.size();
+        uint64_t firstEntry = packed.cellPrimitives.size();
+        if (firstCell + g.cellStart.size() >= (uint64_t(1) << 32) ||
+            firstEntry + g.cellPrimitives.size() >= (uint64_t(1) << 32))
+            throw Error("the prototypes' grids hold more than 2^32 cells or entries");
+        for (uint32_t start : g.cellStart)
+            packed.cellStart.push_back(uint32_t(firstEntry) + start);
+        for (uint32_t local : g.cellPrimitives)
+            packed.cellPrimitives.push_back(firstTriangle[1 + m] + local);
+        glm::uvec3 res(g.resolution);
+        packed.meshGrids.push_back({glm::vec4(g.boundsMin, 0.0f), glm::vec4(g.boundsMax, 0.0f),
+                                    glm::vec4(g.cellSize, 0.0f),
+                                    glm::uvec4(res, uint32_t(firstCell))});
+    }
+    for (const Instance &i : scene.instances) {
+        glm::dmat3 toObject = glm::transpose(i.rotation) / i.scale;
+        glm::dvec3 toObjectOffset = -(toObject * i.translation);
+        glm::dmat3 toWorld = i.scale * i.rotation;
+        float material = i.material == kOwnMaterials ? -1.0f : indexAsFloat(uint32_t(i.material));
+        packed.instances.push_back(
+            {affineRow(toObject, toObjectOffset, 0), affineRow(toObject, toObjectOffset, 1),
+             affineRow(toObject, toObjectOffset, 2), affineRow(toWorld, i.translation, 0),
+             affineRow(toWorld, i.translation, 1), affineRow(toWorld, i.translation, 2),
+             glm::vec4(indexAsFloat(i.prototype), material, 0.0f, 0.0f)});
+    }
 }
 
 } // namespace
@@ -42,21 +86,33 @@ PackedScene packScene(const Scene &scene, const Grid &grid) {
 
     // The tracer reads shading data for every triangle hit where the scene has vertex normals,
     // textures or normal/bump maps (tracer_features.h): then every triangle has its record.
-    bool needShading = false;
-    for (const Triangle &t : scene.triangles)
-        needShading = needShading || t.hasNormals || t.hasUVs;
+    std::vector<const std::vector<Triangle> *> triangleLists = {&scene.triangles};
+    for (const MeshPrototype &m : scene.prototypes)
+        triangleLists.push_back(&m.triangles);
+    bool needShading = false, anyTriangles = false;
+    for (const std::vector<Triangle> *list : triangleLists)
+        for (const Triangle &t : *list) {
+            needShading = needShading || t.hasNormals || t.hasUVs;
+            anyTriangles = true;
+        }
     for (const Material &m : scene.materials)
-        needShading = needShading ||
-                      ((m.texture != kNoTexture || m.hasSurfaceMaps()) && !scene.triangles.empty());
-    for (const Triangle &t : scene.triangles) {
-        packed.triangles.push_back({glm::vec4(t.p[0], indexAsFloat(t.material)),
-                                    glm::vec4(t.p[1], 0.0f), glm::vec4(t.p[2], 0.0f)});
-        if (needShading)
-            packed.triangleShading.push_back({glm::vec4(t.n[0], t.hasNormals ? 1.0f : 0.0f),
-                                              glm::vec4(t.n[1], t.hasUVs ? 1.0f : 0.0f),
-                                              glm::vec4(t.n[2], 0.0f), glm::vec4(t.uv[0], t.uv[1]),
-                                              glm::vec4(t.uv[2], 0.0f, 0.0f)});
+        needShading =
+            needShading || ((m.texture != kNoTexture || m.hasSurfaceMaps()) && anyTriangles);
+    std::vector<uint32_t> firstTriangle; // of each list
+    for (const std::vector<Triangle> *list : triangleLists) {
+        firstTriangle.push_back(uint32_t(packed.triangles.size()));
+        for (const Triangle &t : *list) {
+            packed.triangles.push_back({glm::vec4(t.p[0], indexAsFloat(t.material)),
+                                        glm::vec4(t.p[1], 0.0f), glm::vec4(t.p[2], 0.0f)});
+            if (needShading)
+                packed.triangleShading.push_back(
+                    {glm::vec4(t.n[0], t.hasNormals ? 1.0f : 0.0f),
+                     glm::vec4(t.n[1], t.hasUVs ? 1.0f : 0.0f), glm::vec4(t.n[2], 0.0f),
+                     glm::vec4(t.uv[0], t.uv[1]), glm::vec4(t.uv[2], 0.0f, 0.0f)});
+        }
     }
+    if (packed.triangles.size() >= (uint64_t(1) << 29))
+        throw Error("scene has more than 2^29 triangles, prototypes' included"); // resume.glsl
 
     for (const Material &m : scene.materials)
         packed.materials.push_back(
@@ -75,6 +131,7 @@ PackedScene packScene(const Scene &scene, const Grid &grid) {
 
     packed.cellStart = grid.cellStart;
     packed.cellPrimitives = grid.cellPrimitives;
+    packInstances(scene, grid, firstTriangle, packed);
     packed.gridEntries = grid.entries;
     packed.cellBoxes = grid.cellBoxes;
     for (size_t c = 0; c < packed.cellBoxes.size(); ++c)

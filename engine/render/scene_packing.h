@@ -23,8 +23,12 @@ struct PackedScene {
     std::vector<uint32_t> cellPrimitives;
     std::vector<uint32_t> gridEntries; // adaptive grid only
     std::vector<glm::uvec4> cellBoxes; // adaptive grid only
+    std::vector<gpu::GpuInstance> instances;
+    std::vector<gpu::GpuMeshGrid> meshGrids; // one per prototype
 };
 
+// The triangle array holds the scene's triangles, then each prototype's; the cell arrays the
+// scene grid, then each prototype's grid (gpu::GpuMeshGrid says where).
 // Positions become 32-bit floats here: give it a scene centred on the camera
 // (scene/scene_origin.h), with the grid built from that same scene.
 PackedScene packScene(const Scene &scene, const Grid &grid);

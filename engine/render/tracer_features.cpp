@@ -28,8 +28,13 @@ TracerFeatures featuresOf(const Scene &scene) {
     f.environment = scene.environment.texture != kNoTexture;
     f.areaLights = std::any_of(scene.lights.begin(), scene.lights.end(),
                                [](const Light &l) { return l.radius > 0.0f; });
-    f.vertexNormals = std::any_of(scene.triangles.begin(), scene.triangles.end(),
-                                  [](const Triangle &t) { return t.hasNormals; });
+    auto anyNormals = [](const std::vector<Triangle> &triangles) {
+        return std::any_of(triangles.begin(), triangles.end(),
+                           [](const Triangle &t) { return t.hasNormals; });
+    };
+    f.vertexNormals = anyNormals(scene.triangles);
+    for (const MeshPrototype &m : scene.prototypes)
+        f.vertexNormals = f.vertexNormals || anyNormals(m.triangles);
     return f;
 }
 

@@ -9,12 +9,13 @@ PrimitiveIds::PrimitiveIds(const Scene &scene) {
     uint64_t counts[gpu::kFiniteKindCount] = {};
     counts[gpu::kKindSphere] = scene.spheres.size();
     counts[gpu::kKindTriangle] = scene.triangles.size();
+    counts[gpu::kKindInstance] = scene.instances.size();
     uint64_t total = 0;
     for (uint32_t kind = 0; kind < 4; ++kind) {
         if (kind < gpu::kFiniteKindCount)
             total += counts[kind];
         if (total >= (uint64_t(1) << 32))
-            throw Error("scene has more than 2^32 spheres and triangles");
+            throw Error("scene has more than 2^32 spheres, triangles and instances");
         end[int(kind)] = uint32_t(total);
     }
 }

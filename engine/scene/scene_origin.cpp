@@ -17,6 +17,8 @@ void moveOrigin(Scene &scene, glm::dvec3 point) {
     for (Triangle &t : scene.triangles)
         for (glm::dvec3 &p : t.p)
             p -= point;
+    for (Instance &i : scene.instances) // prototypes live in their own space
+        i.translation -= point;
 }
 
 namespace {
@@ -48,6 +50,16 @@ void centerOn(Scene &scene, glm::dvec3 point) {
     for (Triangle &t : scene.triangles)
         for (glm::dvec3 &p : t.p)
             p = asFloat(p);
+    for (Instance &i : scene.instances) {
+        i.translation = asFloat(i.translation);
+        i.scale = toFloat(i.scale);
+        for (int c = 0; c < 3; ++c)
+            i.rotation[c] = asFloat(i.rotation[c]);
+    }
+    for (MeshPrototype &m : scene.prototypes)
+        for (Triangle &t : m.triangles)
+            for (glm::dvec3 &p : t.p)
+                p = asFloat(p);
 }
 
 void centerOnCamera(Scene &scene) {

@@ -87,6 +87,41 @@ PRISM_INLINE uint triangleMaterial(PRISM_IN(GpuTriangle) t) {
     return indexFromFloat(t.v0.w);
 }
 
+// A placement of a mesh prototype (scene.h, Instance): the similarity both ways, as the rows of
+// 3x4 matrices (p' = (dot(row0.xyz, p) + row0.w, ...)). The walk takes rays into the prototype's
+// space (toObject); shading takes the hit triangle out of it (toWorld).
+struct GpuInstance {
+    vec4 toObject0;
+    vec4 toObject1;
+    vec4 toObject2;
+    vec4 toWorld0;
+    vec4 toWorld1;
+    vec4 toWorld2;
+    vec4 info; // x: the prototype (its GpuMeshGrid), y: material for every face (-1: its own)
+};
+PRISM_INLINE uint instancePrototype(PRISM_IN(GpuInstance) i) {
+    return indexFromFloat(i.info.x);
+}
+PRISM_INLINE bool instanceOverridesMaterial(PRISM_IN(GpuInstance) i) {
+    return i.info.y >= 0.0f;
+}
+PRISM_INLINE uint instanceMaterial(PRISM_IN(GpuInstance) i) {
+    return indexFromFloat(i.info.y);
+}
+
+// A prototype's own regular grid, in its space (accel/grid.h, Grid::meshGrids). Its cells'
+// offsets follow the scene grid's in the cell-offset array, and its cells list the prototype's
+// triangles by their index in the triangle array.
+struct GpuMeshGrid {
+    vec4 gridMin;  // xyz
+    vec4 gridMax;  // xyz
+    vec4 cellSize; // xyz
+    uvec4 res;     // xyz: cells per axis; w: its first cell's entry in the cell offsets
+};
+PRISM_INLINE uint meshGridFirstCell(PRISM_IN(GpuMeshGrid) g) {
+    return g.res.w;
+}
+
 struct GpuTriangleShading {
     vec4 n0; // vertex normals; n0.w = 1 when present
     vec4 n1; // n1.w = 1 when texture coordinates are present
@@ -239,7 +274,8 @@ struct GpuResumeRecord {
     // there is a walk in progress.
     uvec4 progress;
     uvec4 bestHit; // the walk in progress's closest hit so far, packed as in the log
-    uvec4 walker;  // xyz: its cell (regular grid) or voxel (adaptive) on entering the cell
+    uvec4 walker;  // xyz: its cell (regular grid) or voxel (adaptive) on entering the cell;
+                   // w: the best hit's instance (as the log's second word, resume.glsl)
     uvec4 walkerT; // float bits: xyz tNext (regular) or x the walk's t there (adaptive)
 };
 
@@ -258,6 +294,11 @@ static_assert(sizeof(GpuSphere) == 32);
 static_assert(sizeof(GpuPlane) == 32);
 static_assert(sizeof(GpuTriangle) == 48);
 static_assert(sizeof(GpuTriangleShading) == 80);
+static_assert(sizeof(GpuInstance) == 112);
+static_assert(offsetof(GpuInstance, toWorld0) == 48);
+static_assert(offsetof(GpuInstance, info) == 96);
+static_assert(sizeof(GpuMeshGrid) == 64);
+static_assert(offsetof(GpuMeshGrid, res) == 48);
 static_assert(offsetof(GpuTriangleShading, uv01) == 48);
 static_assert(sizeof(GpuMaterial) == 64);
 static_assert(offsetof(GpuMaterial, optics) == 32);

@@ -9,8 +9,11 @@ PRISM_NAMESPACE_BEGIN
 
 PRISM_CONST(uint, kKindSphere, 0u);
 PRISM_CONST(uint, kKindTriangle, 1u);
-PRISM_CONST(uint, kFiniteKindCount, 2u); // at most 4: the ends travel in one uvec4
-PRISM_CONST(uint, kKindPlane, 2u);       // infinite: outside the grid, tested by brute force
+// A placement of a mesh prototype: the grid holds its box; its triangles are found by a walk of
+// the prototype's own grid in its own space (traverse.glsl). A hit on it is a triangle hit.
+PRISM_CONST(uint, kKindInstance, 2u);
+PRISM_CONST(uint, kFiniteKindCount, 3u); // at most 4: the ends travel in one uvec4
+PRISM_CONST(uint, kKindPlane, 3u);       // infinite: outside the grid, tested by brute force
 PRISM_CONST(uint, kKindNone, 0xFFFFFFFFu);
 
 // First grid id of finite kind `kind`, given each kind's end.

@@ -39,7 +39,11 @@ PRISM_CONST(uint, kBindingCellBoxTexels, 23u);         // rgba32ui
 // Resumable tracing (resume.glsl): a GpuResumeRecord and a walk log per pixel of the tile.
 PRISM_CONST(uint, kBindingResumeRecords, 24u);
 PRISM_CONST(uint, kBindingWalkLog, 25u); // uvec4 per walk result, frameWalkLogSize per pixel
-PRISM_CONST(uint, kTraceBindingCount, 26u);
+// Instances (scene.h): the placements, and their prototypes' grids.
+PRISM_CONST(uint, kBindingInstances, 26u);
+PRISM_CONST(uint, kBindingMeshGrids, 27u);
+PRISM_CONST(uint, kBindingInstanceTexels, 28u); // rgba32f, 7 per GpuInstance
+PRISM_CONST(uint, kTraceBindingCount, 29u);
 
 // Specialization constants: features a scene does not use are compiled out.
 PRISM_CONST(uint, kSpecKinds, 0u); // bit k: the scene has primitives of kind k

@@ -8,10 +8,20 @@ namespace prism {
 namespace {
 
 TEST(ResumePlan, LogHoldsEveryWalkOfTheRayTree) {
-    // depth 3: 7 rays, each with a closest-hit walk and one shadow walk per light, + the AOV walk
-    EXPECT_EQ(planResume(64, 64, 3, 2, true).walkLogSize, 7u * 3u + 1u);
+    // depth 3, glass that also reflects (3 rays a hit): 1 + 3 + 9 rays, each with a closest-hit
+    // walk and one shadow walk per light, + the AOV walk
+    EXPECT_EQ(planResume(64, 64, 3, 2, true).walkLogSize, 13u * 3u + 1u);
+    // mirrors only (1 ray a hit), glass only (2)
+    EXPECT_EQ(planResume(64, 64, 3, 2, true, 64 << 20, false, 1).walkLogSize, 3u * 3u + 1u);
+    EXPECT_EQ(planResume(64, 64, 3, 2, true, 64 << 20, false, 2).walkLogSize, 7u * 3u + 1u);
     EXPECT_EQ(planResume(64, 64, 1, 1, false).walkLogSize, 2u);
     EXPECT_EQ(planResume(64, 64, 30, 4, false).walkLogSize, kMaxWalkLog);
+}
+
+TEST(ResumePlan, InstancesLogTwiceTheBytes) {
+    ResumePlan plain = planResume(64, 64, 3, 2, true);
+    ResumePlan instanced = planResume(64, 64, 3, 2, true, 64 << 20, true);
+    EXPECT_EQ(instanced.logBytes(), 2 * plain.logBytes());
 }
 
 TEST(ResumePlan, SmallImagesAreOneTileOfWholeWorkgroups) {

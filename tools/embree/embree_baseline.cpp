@@ -14,6 +14,7 @@
 #include "core/timer.h"
 #include "reference/camera_model.h"
 #include "scene/camera_frame.h"
+#include "scene/instance_flattening.h"
 
 namespace prism {
 namespace {
@@ -112,7 +113,13 @@ EmbreeBaseline::EmbreeBaseline(const Scene &scene, uint32_t width, uint32_t heig
     check(s.device, "rtcNewScene");
     std::vector<glm::vec3> corners;
     glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-    for (const Triangle &t : scene.triangles)
+    // Instances as plain triangles: the baseline is Embree's flat BVH over the same surfaces.
+    std::vector<Triangle> triangles = scene.triangles;
+    for (const Instance &instance : scene.instances) {
+        std::vector<Triangle> placed = placedTriangles(scene, instance);
+        triangles.insert(triangles.end(), placed.begin(), placed.end());
+    }
+    for (const Triangle &t : triangles)
         for (const glm::dvec3 &corner : t.p) {
             glm::vec3 p(corner); // the scene is centred on the camera: floats are fine here
             corners.push_back(p);

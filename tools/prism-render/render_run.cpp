@@ -35,9 +35,10 @@ struct VulkanPhases {
 // What one backend produced: the image and the per-frame timings.
 struct RenderOutcome {
     OutputImage image;
-    std::vector<double> frameMs;   // timed frames only (after warm-up)
-    RayCounts rays;                // of one frame
-    uint32_t resumeDispatches = 0; // of the last frame, when traced resumably
+    std::vector<double> frameMs;         // timed frames only (after warm-up)
+    RayCounts rays;                      // of one frame
+    uint32_t resumeDispatches = 0;       // of the last frame, when traced resumably
+    std::vector<ArrayBytes> sceneArrays; // the scene on the device (Vulkan only)
     std::string device;
     VulkanPhases phases;
 };
@@ -59,6 +60,7 @@ RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const G
     out.phases.tracerMs = phase.elapsedMs();
 
     out.device = context.deviceName();
+    out.sceneArrays = tracer.sceneArrayBytes();
     ProgressLine progress(!o.quiet);
     // lavapipe compiles the shader inside the first dispatch: one 8x8 tile takes that out of
     // the timed frames. Timing several frames (--repeat) also gets a warm-up frame, so that
@@ -211,6 +213,27 @@ void runRender(const RenderOptions &o) {
               {"secondary", out.rays.secondary}}},
             {"mrays_per_s", mraysPerSecond},
             {"resume_dispatches", out.resumeDispatches}};
+        // Instances: the triangles stored (the scene's and each prototype's once) against the
+        // triangles the placements draw.
+        uint64_t prototypeTriangles = 0, placedTriangles = 0;
+        for (const MeshPrototype &m : scene.prototypes)
+            prototypeTriangles += m.triangles.size();
+        for (const Instance &i : scene.instances)
+            placedTriangles += scene.prototypes[i.prototype].triangles.size();
+        stats["triangles"] = {{"scene", scene.triangles.size()},
+                              {"prototypes", prototypeTriangles},
+                              {"instances", scene.instances.size()},
+                              {"placed", placedTriangles}};
+        if (!out.sceneArrays.empty()) {
+            nlohmann::json gpuBytes;
+            uint64_t total = 0;
+            for (const ArrayBytes &a : out.sceneArrays) {
+                gpuBytes[a.what] = a.bytes;
+                total += a.bytes;
+            }
+            gpuBytes["total"] = total;
+            stats["scene_gpu_bytes"] = gpuBytes;
+        }
         nlohmann::json phases = {{"load", loadMs}, {"build", buildMs}};
         if (o.backend == Backend::Vulkan)
             phases.update({{"context", out.phases.contextMs},
