@@ -20,6 +20,13 @@ inline void checkTriangleLimit(uint64_t count, uint64_t limit) {
                         " triangles, the limit (SceneLimits::maxTriangles)");
 }
 
+// Throws LineError when a scene would hold `count` instances (`place` lines), more than `limit`.
+inline void checkInstanceLimit(uint64_t count, uint64_t limit) {
+    if (count > limit)
+        throw LineError("the scene would hold more than " + std::to_string(limit) +
+                        " instances, the limit (SceneLimits::maxInstances)");
+}
+
 inline std::string warningAt(const std::string &file, int line, const std::string &message) {
     return file + ":" + std::to_string(line) + ": warning: " + message;
 }

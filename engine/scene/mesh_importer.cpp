@@ -7,17 +7,12 @@
 #include "scene/vertex_normals.h"
 
 #include <array>
-#include <cfloat>
 #include <cmath>
 #include <map>
 #include <system_error>
 
 namespace prism {
 namespace {
-
-bool fitsFloat(const glm::dvec3 &v) {
-    return std::fabs(v.x) <= FLT_MAX && std::fabs(v.y) <= FLT_MAX && std::fabs(v.z) <= FLT_MAX;
-}
 
 bool isReadableFile(const std::filesystem::path &path) {
     std::error_code ec;
@@ -68,7 +63,8 @@ bool hasZeroArea(const glm::dvec3 &p0, const glm::dvec3 &p1, const glm::dvec3 &p
 }
 
 MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &request,
-                                      Scene &scene, TextureCache &textures, uint64_t maxTriangles) {
+                                      Scene &scene, TextureCache &textures,
+                                      const TriangleSink &sink) {
     std::vector<uint32_t> slotMaterial;
     if (!request.namedMaterial)
         slotMaterial = slotMaterials(model, request, scene, textures);
@@ -112,7 +108,7 @@ MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &
             if (!t.hasUVs)
                 t.uv[0] = t.uv[1] = t.uv[2] = glm::vec2(0.0f);
             t.material = material;
-            checkTriangleLimit(scene.triangles.size() + triangles.size() + 1, maxTriangles);
+            checkTriangleLimit(sink.held + triangles.size() + 1, sink.maxTriangles);
             triangles.push_back(t);
             if (request.smoothCreaseDegrees)
                 shapes.push_back(
@@ -133,7 +129,7 @@ MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &
                 triangles[i].hasNormals = true;
             }
     }
-    scene.triangles.insert(scene.triangles.end(), triangles.begin(), triangles.end());
+    sink.triangles.insert(sink.triangles.end(), triangles.begin(), triangles.end());
     result.triangles = triangles.size();
     return result;
 }

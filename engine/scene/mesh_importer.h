@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "scene/mesh_transform.h"
 #include "scene/mtl_loader.h"
@@ -26,18 +27,26 @@ struct MeshRequest {
     std::optional<double> smoothCreaseDegrees;
 };
 
+// Where a mesh's triangles go: the scene's own, or a prototype's (`mesh ... as`). Either way
+// they count against the scene's triangle limit, on top of the `held` it has already.
+struct TriangleSink {
+    std::vector<Triangle> &triangles;
+    uint64_t held = 0;         // the scene's triangles and its prototypes'
+    uint64_t maxTriangles = 0; // SceneLimits::maxTriangles
+};
+
 struct MeshImportResult {
-    size_t triangles = 0;         // added to the scene
+    size_t triangles = 0;         // added to the sink
     size_t degenerateDropped = 0; // zero-area triangles (they can never be hit)
 };
 
 class MeshImporter {
 public:
-    // Appends the model's triangles (and the MTL materials and textures they use) to `scene`;
-    // MTL problems become warnings. Throws LineError if the transform makes a vertex
-    // non-finite, or the scene would hold more than maxTriangles triangles.
+    // Appends the model's triangles to `sink.triangles`, and the MTL materials and textures
+    // they use to `scene`; MTL problems become warnings. Throws LineError if the transform
+    // makes a vertex non-finite, or the scene would hold more than sink.maxTriangles triangles.
     MeshImportResult import(const ObjModel &model, const MeshRequest &request, Scene &scene,
-                            TextureCache &textures, uint64_t maxTriangles);
+                            TextureCache &textures, const TriangleSink &sink);
 
 private:
     struct LoadedLibrary {

@@ -1,5 +1,6 @@
 #include "scene/mesh_transform.h"
 
+#include <cfloat>
 #include <cmath>
 #include <numbers>
 
@@ -37,10 +38,19 @@ glm::dmat3 axisRotation(int axis, double degrees) {
     return m;
 }
 
+glm::dmat3 rotationOf(const std::vector<MeshRotation> &rotations) {
+    glm::dmat3 m(1.0);
+    for (const MeshRotation &rotation : rotations)
+        m = axisRotation(rotation.axis, rotation.degrees) * m;
+    return m;
+}
+
+bool fitsFloat(const glm::dvec3 &v) {
+    return std::fabs(v.x) <= FLT_MAX && std::fabs(v.y) <= FLT_MAX && std::fabs(v.z) <= FLT_MAX;
+}
+
 AffineMap::AffineMap(const MeshTransform &transform) {
-    linear_ = glm::dmat3(transform.scale);
-    for (const MeshRotation &rotation : transform.rotations)
-        linear_ = axisRotation(rotation.axis, rotation.degrees) * linear_;
+    linear_ = rotationOf(transform.rotations) * transform.scale;
     offset_ = transform.translation;
     normalMatrix_ = glm::transpose(glm::inverse(linear_));
 }

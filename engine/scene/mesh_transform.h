@@ -35,4 +35,11 @@ private:
 // Rotation about a coordinate axis; quarter turns are exact (no cos(90°) = 6e-17 residue).
 glm::dmat3 axisRotation(int axis, double degrees);
 
+// The rotations in the order written, as one matrix: the last one written is the leftmost
+// factor. AffineMap's linear part is this times the scale.
+glm::dmat3 rotationOf(const std::vector<MeshRotation> &rotations);
+
+// True when every component fits a 32-bit float (the GPU's positions).
+bool fitsFloat(const glm::dvec3 &v);
+
 } // namespace prism

@@ -1,4 +1,4 @@
-// One handler per .scene directive (format v1, docs/scene-format.md).
+// One handler per .scene directive (format v1.1, docs/scene-format.md).
 #include "scene/scene_parser.h"
 
 #include "core/error.h"
@@ -85,7 +85,7 @@ void addTriangle(SceneBuilder &builder, glm::dvec3 a, glm::dvec3 b, glm::dvec3 c
     t.p[1] = b;
     t.p[2] = c;
     t.material = material;
-    checkTriangleLimit(builder.scene.triangles.size() + 1, builder.limits.maxTriangles);
+    checkTriangleLimit(builder.heldTriangles() + 1, builder.limits.maxTriangles);
     builder.scene.triangles.push_back(t);
 }
 
@@ -290,7 +290,60 @@ int rotationAxis(const Token *token) {
 // step, and the bunny's (mostly under 40), come out smooth.
 constexpr double kDefaultCreaseDegrees = 60.0;
 
+// `scale`, `rotate` and `translate`, as `mesh` and `place` take them; false for other keys.
+bool placementKey(const KeyedValues &kv, MeshTransform &transform) {
+    if (kv.key == "scale") {
+        transform.scale = number(kv.values[0]);
+        if (!(transform.scale > 0.0))
+            throw LineError("'scale' must be > 0, got " + formatNumber(transform.scale));
+    } else if (kv.key == "rotate") {
+        transform.rotations.push_back(
+            MeshRotation{rotationAxis(kv.values[0]), number(kv.values[1])});
+    } else if (kv.key == "translate") {
+        transform.translation = pointAt(kv.values);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+void checkNewPrototypeName(const SceneBuilder &builder, const std::string &name) {
+    if (auto earlier = builder.prototypeByName.find(name); earlier != builder.prototypeByName.end())
+        throw LineError("prototype '" + name + "' is already defined at line " +
+                        std::to_string(earlier->second.line));
+}
+
+// `mesh ... as ID`: the placed mesh's triangles, centred on their bounding box, become a
+// prototype that only `place` lines draw. One without triangles is remembered (so that its
+// `place` lines can say so) but not added to Scene::prototypes.
+void definePrototype(SceneBuilder &builder, const std::string &name,
+                     std::vector<Triangle> triangles) {
+    PrototypeEntry entry;
+    entry.line = builder.line;
+    if (!triangles.empty()) {
+        glm::dvec3 lo = triangles[0].p[0], hi = lo;
+        for (const Triangle &t : triangles)
+            for (const glm::dvec3 &p : t.p) {
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            }
+        entry.centre = 0.5 * lo + 0.5 * hi;
+        for (Triangle &t : triangles)
+            for (glm::dvec3 &p : t.p)
+                p -= entry.centre;
+        entry.boxMin = lo - entry.centre; // rounded as the vertex it came from: still the box
+        entry.boxMax = hi - entry.centre;
+        entry.index = uint32_t(builder.scene.prototypes.size());
+        builder.prototypeTriangles += triangles.size();
+        builder.scene.prototypes.push_back(MeshPrototype{name, std::move(triangles)});
+    }
+    builder.prototypeByName.emplace(name, entry);
+}
+
 void mesh(SceneBuilder &builder, const DirectiveArgs &args) {
+    const KeyedValues *as = args.find("as");
+    if (as)
+        checkNewPrototypeName(builder, as->values[0]->text);
     MeshRequest request;
     request.objPath = resolveInputPath(builder.baseDir, args.positional[0]->text);
     request.objName = displayPath(resolveInputPath("", args.positional[0]->text));
@@ -298,17 +351,9 @@ void mesh(SceneBuilder &builder, const DirectiveArgs &args) {
         request.namedMaterial = materialNamed(builder, args.positional[1]);
     request.fallbackMaterial = builder.currentMaterial;
     for (const KeyedValues &kv : args.keyed) {
-        if (kv.key == "scale") {
-            request.transform.scale = number(kv.values[0]);
-            if (!(request.transform.scale > 0.0))
-                throw LineError("'scale' must be > 0, got " +
-                                formatNumber(request.transform.scale));
-        } else if (kv.key == "rotate") {
-            request.transform.rotations.push_back(
-                MeshRotation{rotationAxis(kv.values[0]), number(kv.values[1])});
-        } else if (kv.key == "translate") {
-            request.transform.translation = pointAt(kv.values);
-        } else if (kv.key == "smooth") {
+        if (placementKey(kv, request.transform))
+            continue;
+        if (kv.key == "smooth") {
             double crease = kv.values.empty() ? kDefaultCreaseDegrees : number(kv.values[0]);
             if (!(crease >= 0.0 && crease <= 180.0))
                 throw LineError("'smooth' crease angle must be between 0 and 180 degrees, got " +
@@ -320,10 +365,61 @@ void mesh(SceneBuilder &builder, const DirectiveArgs &args) {
     ObjModel model = parseObj(text, displayPath(request.objPath));
     builder.scene.warnings.insert(builder.scene.warnings.end(), model.warnings.begin(),
                                   model.warnings.end());
-    MeshImportResult result = builder.meshes.import(model, request, builder.scene, builder.textures,
-                                                    builder.limits.maxTriangles);
+    std::vector<Triangle> prototype;
+    TriangleSink sink{as ? prototype : builder.scene.triangles, builder.heldTriangles(),
+                      builder.limits.maxTriangles};
+    MeshImportResult result =
+        builder.meshes.import(model, request, builder.scene, builder.textures, sink);
     warnDropped(builder, int(result.degenerateDropped),
                 " in '" + displayPath(request.objPath) + "'");
+    if (as)
+        definePrototype(builder, as->values[0]->text, std::move(prototype));
+}
+
+// True when `instance` keeps every corner of the prototype's box within float range.
+bool placedBoxFitsFloat(const Instance &instance, const PrototypeEntry &entry) {
+    for (int corner = 0; corner < 8; ++corner) {
+        glm::dvec3 p((corner & 1) ? entry.boxMax.x : entry.boxMin.x,
+                     (corner & 2) ? entry.boxMax.y : entry.boxMin.y,
+                     (corner & 4) ? entry.boxMax.z : entry.boxMin.z);
+        if (!fitsFloat(instance.toWorld(p)))
+            return false;
+    }
+    return true;
+}
+
+// `place ID [NAME] ...`: one instance of the prototype, which puts the mesh's vertex v (as the
+// `mesh ... as` line placed it, before centring) at translate + scale * R * v, R the rotations
+// in the order written, exactly as a `mesh` line with these keys would. The prototype holds
+// v - centre, so the instance's translation takes the centre in.
+void place(SceneBuilder &builder, const DirectiveArgs &args) {
+    const std::string &name = args.positional[0]->text;
+    auto found = builder.prototypeByName.find(name);
+    if (found == builder.prototypeByName.end())
+        throw LineError("unknown prototype '" + name + "' (a 'mesh PATH ... as " + name +
+                        "' line above it defines one)");
+    const PrototypeEntry &entry = found->second;
+    Instance instance;
+    if (args.positional.size() > 1)
+        instance.material = int32_t(materialNamed(builder, args.positional[1]));
+    MeshTransform transform;
+    for (const KeyedValues &kv : args.keyed)
+        placementKey(kv, transform);
+    if (!entry.index) {
+        builder.warn("prototype '" + name + "' (line " + std::to_string(entry.line) +
+                     ") has no triangles; nothing is placed");
+        return;
+    }
+    instance.prototype = *entry.index;
+    instance.scale = transform.scale;
+    instance.rotation = rotationOf(transform.rotations);
+    instance.translation =
+        transform.translation + transform.scale * (instance.rotation * entry.centre);
+    if (!placedBoxFitsFloat(instance, entry))
+        throw LineError("the placement takes the bounding box of prototype '" + name +
+                        "' out of the range of a 32-bit float");
+    checkInstanceLimit(builder.scene.instances.size() + 1, builder.limits.maxInstances);
+    builder.scene.instances.push_back(instance);
 }
 
 struct Directive {
@@ -381,11 +477,23 @@ const std::map<std::string_view, Directive> &directives() {
         {"f", {{"f", "f A B C [D ...]", 0, kAny, {}}, face}},
         {"mesh",
          {{"mesh",
-           "mesh PATH [NAME] [scale S] [rotate AXIS DEG]... [translate X Y Z] [smooth [ANGLE]]",
+           "mesh PATH [NAME] [scale S] [rotate AXIS DEG]... [translate X Y Z] [smooth [ANGLE]] "
+           "[as ID]",
            1,
            2,
-           {{"scale", 1}, {"rotate", 2, true}, {"translate", 3}, {"smooth", 0, false, 1}}},
+           {{"scale", 1},
+            {"rotate", 2, true},
+            {"translate", 3},
+            {"smooth", 0, false, 1},
+            {"as", 1}}},
           mesh}},
+        {"place",
+         {{"place",
+           "place ID [NAME] [scale S] [rotate AXIS DEG]... [translate X Y Z]",
+           1,
+           2,
+           {{"scale", 1}, {"rotate", 2, true}, {"translate", 3}}},
+          place}},
     };
     return table;
 }

@@ -13,8 +13,12 @@ namespace prism {
 // name one large OBJ file any number of times). Textures have their own limit
 // (scene/texture_loader.h). Tests lower the limits to reach them.
 struct SceneLimits {
-    // 2^25 triangles: ~3.5 GB on the host, 1.5 GiB of vertices on the GPU.
+    // 2^25 triangles: ~3.5 GB on the host, 1.5 GiB of vertices on the GPU. A prototype's
+    // triangles (`mesh ... as`) count once, however often `place` draws them.
     uint64_t maxTriangles = uint64_t(1) << 25;
+    // 2^22 instances (`place` lines), for memory: each takes 112 bytes on the GPU, 448 MiB at
+    // the limit, and about as much again on the host; a line costs a few bytes of file.
+    uint64_t maxInstances = uint64_t(1) << 22;
 };
 
 // Reads and parses `path`. Throws prism::FileError ("FILE:LINE: what is wrong") for errors in

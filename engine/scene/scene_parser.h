@@ -2,6 +2,7 @@
 // The .scene reader's state while it walks one file, shared by the directive handlers.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -16,6 +17,14 @@
 
 namespace prism {
 
+// A prototype named by `mesh ... as ID`, as `place ID` needs it.
+struct PrototypeEntry {
+    std::optional<uint32_t> index; // into Scene::prototypes; none when it has no triangles
+    glm::dvec3 centre{0.0};        // of the placed mesh's bounding box, taken off its vertices
+    glm::dvec3 boxMin{0.0}, boxMax{0.0}; // its bounding box after centring
+    int line = 0;                        // the `mesh ... as` line
+};
+
 struct SceneBuilder {
     std::string fileName;          // as shown in messages
     std::filesystem::path baseDir; // relative paths resolve here
@@ -28,9 +37,14 @@ struct SceneBuilder {
     std::unordered_map<std::string, uint32_t> materialByName;
     std::unordered_map<std::string, int> materialLine; // 0 for the built-in `default`
     uint32_t currentMaterial = 0;
-    int cameraLine = 0;                  // 0 until a camera line
-    int environmentLine = 0;             // 0 until an environment line
+    int cameraLine = 0;                   // 0 until a camera line
+    int environmentLine = 0;              // 0 until an environment line
     std::vector<glm::dvec3> faceVertices; // this file's `v` lines, for `f`
+    std::unordered_map<std::string, PrototypeEntry> prototypeByName;
+    uint64_t prototypeTriangles = 0; // in all of Scene::prototypes
+
+    // What counts against SceneLimits::maxTriangles: a prototype's triangles count once.
+    uint64_t heldTriangles() const { return scene.triangles.size() + prototypeTriangles; }
 
     TextureCache textures;
     MeshImporter meshes;

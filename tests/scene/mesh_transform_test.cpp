@@ -36,6 +36,21 @@ TEST(MeshTransform, ScaleThenRotationsInOrderThenTranslate) {
     EXPECT_EQ(AffineMap(t).point({0, 1, 0}), glm::dvec3(10, 20, 32));
 }
 
+// `place` stores rotationOf as an instance's rotation: the same product as a mesh line's.
+TEST(MeshTransform, RotationOfIsTheMeshLinesRotationsInOrder) {
+    EXPECT_EQ(rotationOf({}), glm::dmat3(1.0));
+    MeshTransform t;
+    t.rotations = {{0, 90}, {1, 90}};
+    EXPECT_EQ(rotationOf(t.rotations), axisRotation(1, 90) * axisRotation(0, 90));
+    AffineMap map(t);
+    EXPECT_EQ(rotationOf(t.rotations) * glm::dvec3(1, 2, 3), map.point(glm::vec3(1, 2, 3)));
+}
+
+TEST(MeshTransform, FitsFloatIsTheFloatRange) {
+    EXPECT_TRUE(fitsFloat(glm::dvec3(3.4e38, -3.4e38, 0)));
+    EXPECT_FALSE(fitsFloat(glm::dvec3(0, 0, -3.5e38)));
+}
+
 TEST(MeshTransform, NormalsIgnoreTranslationAndKeepDirectionUnderScale) {
     MeshTransform t;
     t.scale = 4;
