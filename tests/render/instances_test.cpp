@@ -72,10 +72,10 @@ Scene instancedScene() {
     return scene;
 }
 
-class Instances : public GpuTest {};
+class InstancedRender : public GpuTest {};
 
 // Measured: no pixel over 0.02 on any grid, mean difference under 0.0001.
-TEST_F(Instances, MatchTheReferenceOnEveryGrid) {
+TEST_F(InstancedRender, MatchTheReferenceOnEveryGrid) {
     Scene scene = instancedScene();
     std::vector<float> cpu = renderCpu(scene, kMatchWidth, kMatchHeight);
     for (const char *grid : {"regular", "adaptive", "off", "auto"}) {
@@ -92,7 +92,7 @@ TEST_F(Instances, MatchTheReferenceOnEveryGrid) {
 
 // The placements are really there: without them the picture changes a lot, and the flattened
 // scene (one level) gives the tracer's two-level image. Measured: 0 pixels over 0.02.
-TEST_F(Instances, EqualTheFlattenedSceneOnTheGpu) {
+TEST_F(InstancedRender, EqualTheFlattenedSceneOnTheGpu) {
     Scene scene = instancedScene();
     std::vector<float> instanced =
         renderGpu(context(), scene, kMatchWidth, kMatchHeight).image.rgba;
@@ -109,7 +109,7 @@ TEST_F(Instances, EqualTheFlattenedSceneOnTheGpu) {
 }
 
 // Shadows and AOVs: the depth and normal of an instance's pixel are the flattened scene's.
-TEST_F(Instances, DepthAndNormalsAreThoseOfTheFlattenedScene) {
+TEST_F(InstancedRender, DepthAndNormalsAreThoseOfTheFlattenedScene) {
     Scene scene = instancedScene();
     TracerOptions options;
     options.writeAov = true;
@@ -129,7 +129,7 @@ TEST_F(Instances, DepthAndNormalsAreThoseOfTheFlattenedScene) {
 
 // Resumable tracing through instances: interrupted between instance walks, in shadow walks and
 // in reflected rays, the same bits as one dispatch.
-TEST_F(Instances, ResumeBitForBit) {
+TEST_F(InstancedRender, ResumeBitForBit) {
     Scene scene = instancedScene();
     for (int k = 0; k < 60; ++k) // many small placements: long walks of instance tests
         scene.instances.push_back(
@@ -174,6 +174,30 @@ TEST(InstancePacking, AThousandPlacementsStoreTheMeshOnce) {
     EXPECT_EQ(sizeof(gpu::GpuInstance), 112u);
     // The mesh grid is the same however often it is placed.
     EXPECT_EQ(grid.meshGrids[0].bytes(), gridOne.meshGrids[0].bytes());
+    // Its cells follow the scene grid's and list the prototype's triangles where the triangle
+    // array holds them, after the scene's own.
+    const gpu::GpuMeshGrid &g = packed.meshGrids[0];
+    ASSERT_EQ(gpu::meshGridFirstCell(g), grid.cellStart.size());
+    uint32_t cells = g.res.x * g.res.y * g.res.z;
+    ASSERT_EQ(packed.cellStart.size(), grid.cellStart.size() + cells + 1);
+    EXPECT_EQ(packed.cellStart[gpu::meshGridFirstCell(g)], grid.cellPrimitives.size());
+    EXPECT_EQ(packed.cellStart.back(), packed.cellPrimitives.size());
+    for (size_t k = grid.cellPrimitives.size(); k < packed.cellPrimitives.size(); ++k) {
+        EXPECT_GE(packed.cellPrimitives[k], scene.triangles.size());
+        EXPECT_LT(packed.cellPrimitives[k], scene.triangles.size() + meshTriangles);
+    }
+    // Each placement's two maps undo each other.
+    const gpu::GpuInstance &i = packed.instances[7];
+    glm::vec3 p(0.3f, -0.2f, 0.5f);
+    auto apply = [](glm::vec4 r0, glm::vec4 r1, glm::vec4 r2, glm::vec3 q) {
+        return glm::vec3(glm::dot(glm::vec3(r0), q) + r0.w, glm::dot(glm::vec3(r1), q) + r1.w,
+                         glm::dot(glm::vec3(r2), q) + r2.w);
+    };
+    glm::vec3 back =
+        apply(i.toObject0, i.toObject1, i.toObject2, apply(i.toWorld0, i.toWorld1, i.toWorld2, p));
+    EXPECT_LT(glm::length(back - p), 1e-5f);
+    EXPECT_EQ(gpu::instancePrototype(i), 0u);
+    EXPECT_FALSE(gpu::instanceOverridesMaterial(i));
 }
 
 } // namespace

@@ -143,7 +143,7 @@ TEST(TracerFeatures, FollowTheScene) {
     EXPECT_EQ(constants.at(gpu::kSpecResumable), 0u) << "resumable only after a cut";
     EXPECT_EQ(constants.at(gpu::kSpecResumeLaneBudget), gpu::kResumeLaneBudget);
     EXPECT_EQ(constants.at(gpu::kSpecProfileWalkDetail), 0u);
-    EXPECT_EQ(constants.at(gpu::kSpecKinds), 0b111u) << "spheres, triangles and planes";
+    EXPECT_EQ(constants.at(gpu::kSpecKinds), 0b1011u) << "spheres, triangles and planes";
     EXPECT_EQ(constants.at(gpu::kSpecStackSize), 9u) << "stack holds 2 * depth - 1 rays";
     EXPECT_EQ(constants.at(gpu::kSpecTexelBuffers), 1u) << "texel-buffer reads";
     EXPECT_EQ(constants.at(gpu::kSpecHasTextures), 0u);

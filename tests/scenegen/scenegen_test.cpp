@@ -53,7 +53,7 @@ const ExpectedCounts kExpected[] = {
     {"scene", 19, 2, 600, 1},  {"grid", 1000, 1, 0, 1},     {"rand50", 50, 3, 0, 1},
     {"rand500", 500, 3, 0, 1}, {"rand5000", 5000, 3, 0, 1}, {"teapot", 0, 1, 6320, 1},
     {"bunny", 0, 0, 4968, 1},  {"objects", 0, 0, 5436, 1},  {"showcase", 4, 1, 12176, 3},
-    {"cornell", 2, 0, 36, 1},
+    {"cornell", 2, 0, 36, 1},  {"instances", 1, 1, 0, 2},
 };
 
 TEST(ShippedScenes, EveryFileLoadsWithoutWarnings) {

@@ -64,6 +64,30 @@ TEST_F(PrismRenderCli, BadOptionsFailClearly) {
     EXPECT_EQ(filesInDir(), 1u);
 }
 
+// Issue 10's memory figure: a thousand placements of one bunny hold its 4,968 triangles once and
+// add 112 bytes each (the instance array); the scene's triangle array is one bunny's, as it would
+// be for a single placement.
+TEST_F(PrismRenderCli, AThousandInstancesStoreOneMeshAndATransformEach) {
+    fs::path out = dir() / "forest.png";
+    CliResult r = run(std::string(PRISM_SCENES_DIR) + "/large/forest.scene -o " + out.string() +
+                      " --size 32x18 --depth 2 --stats --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    nlohmann::json stats = nlohmann::json::parse(r.stdoutOnly);
+    EXPECT_EQ(stats["triangles"]["instances"].get<uint64_t>(), 1000u);
+    EXPECT_EQ(stats["triangles"]["prototypes"].get<uint64_t>(), 4968u);
+    EXPECT_EQ(stats["triangles"]["placed"].get<uint64_t>(), 4968000u);
+    EXPECT_EQ(stats["triangles"]["scene"].get<uint64_t>(), 0u);
+    const nlohmann::json &bytes = stats["scene_gpu_bytes"];
+    EXPECT_EQ(bytes["triangle"].get<uint64_t>(), 4968u * 48u);         // GpuTriangle
+    EXPECT_EQ(bytes["triangle shading"].get<uint64_t>(), 4968u * 80u); // smooth: vertex normals
+    EXPECT_EQ(bytes["instance"].get<uint64_t>(), 1000u * 112u);        // GpuInstance
+    EXPECT_EQ(bytes["mesh grid"].get<uint64_t>(), 64u);                // one prototype
+    // Everything else (grids, textures: the sky) is independent of the bunny's size: the whole
+    // scene stays far below what 4,968,000 triangles would take (608 MB for their arrays alone).
+    EXPECT_LT(bytes["total"].get<uint64_t>(), 8u << 20);
+    EXPECT_EQ(stats["resume_dispatches"].get<uint64_t>(), 0u);
+}
+
 TEST_F(PrismRenderCli, StatsLineAndExrWithAovsAndMetadata) {
     fs::path scene = write("ok.scene", "camera eye 0 0 5 look 0 0 0\nlight 2 2 5\n"
                                        "sphere 0 0 0 1\nplane 0 -1 0 0 1 0\n");
