@@ -45,12 +45,16 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
                 }
             }
             bool walking = true;
+            // Where the ray enters the current cell (instances walk only that part of it). A
+            // resumed regular-grid walk does not know it: from the grid's entry is safe.
+            float tCellEnter = tEnter;
             while (walking) {
                 uint cell, first;
                 float tCellExit;
                 ivec3 entryVoxel = boxWalk.voxel; // the adaptive walker before entering the cell
                 float entryT = boxWalk.t;
                 if (ADAPTIVE_GRID) {
+                    tCellEnter = entryT;
                     cell = enterBoxCell(boxWalk, origin, dir, invDir);
                     first = boxWalk.firstPrimitive;
                     tCellExit = boxWalk.t;
@@ -100,7 +104,7 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
                     if (RESUMABLE && HAS_INSTANCES)
                         chargeBudget(4u);
                     testPrimitive(cellPrimitiveAt(k), origin, dir, wray, TRACE_RAY_ANY_HIT != 0,
-                                  hit);
+                                  tCellEnter, tCellExit, hit);
                 }
                 if (PROFILE_WALK_DETAIL)
                     profileAdd(kPhasePrimitiveTests, testsStart);
@@ -116,6 +120,7 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
 #endif
                 walking = walking &&
                           (ADAPTIVE_GRID ? stepBoxWalk(boxWalk, origin, dir) : stepWalk(walk));
+                tCellEnter = tCellExit;
             }
         }
     }

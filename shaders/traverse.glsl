@@ -83,7 +83,14 @@ uint gridCellIndex(ivec3 cell, uvec3 res) {
 // similarity; the direction there is not unit length, which the triangle tests do not need),
 // walks the prototype's regular grid. A hit is a triangle hit of this instance. With anyHit the
 // walk stops at the first.
-void testInstance(uint inst, vec3 origin, vec3 dir, bool anyHit, inout Hit hit) {
+//
+// The walk covers only the part of the ray in the scene grid's current cell (tCellEnter to
+// tCellExit): an instance spans several cells, and is listed in each, so a ray meets it once per
+// cell; walking all of it each time would repeat the same cells. No hit is lost: a hit lies in
+// some scene cell, whose visit walks the prototype's cells there; hits found past the cell are
+// kept (as any test's are) and accepted once the scene walk gets there.
+void testInstance(uint inst, vec3 origin, vec3 dir, bool anyHit, float tCellEnter,
+                  float tCellExit, inout Hit hit) {
     vec4 r0 = instanceRow(inst, 0u), r1 = instanceRow(inst, 1u), r2 = instanceRow(inst, 2u);
     vec3 o = vec3(dot(r0.xyz, origin) + r0.w, dot(r1.xyz, origin) + r1.w,
                   dot(r2.xyz, origin) + r2.w);
@@ -91,8 +98,10 @@ void testInstance(uint inst, vec3 origin, vec3 dir, bool anyHit, inout Hit hit) 
     GpuMeshGrid grid = meshGridAt(indexFromFloat(instanceRow(inst, 6u).x));
     vec3 invD = 1.0 / d;
     float tEnter, tExit;
-    if (!clipToBox(grid.gridMin.xyz, grid.gridMax.xyz, o, invD, tEnter, tExit) ||
-        tEnter >= hit.t)
+    bool crosses = clipToBox(grid.gridMin.xyz, grid.gridMax.xyz, o, invD, tEnter, tExit);
+    tEnter = max(tEnter, tCellEnter);
+    tExit = min(tExit, tCellExit);
+    if (!crosses || tEnter > tExit || tEnter >= hit.t)
         return;
     WatertightRay wray = makeWatertightRay(d);
     ivec3 res = ivec3(grid.res.xyz);
@@ -120,8 +129,10 @@ void testInstance(uint inst, vec3 origin, vec3 dir, bool anyHit, inout Hit hit) 
 }
 
 // Tests the primitive with grid id `id` and records it in `hit` when closer than hit.t.
+// The scene grid's current cell spans tCellEnter to tCellExit of the ray (an instance's walk
+// needs it).
 void testPrimitive(uint id, vec3 origin, vec3 dir, WatertightRay wray, bool anyHit,
-                   inout Hit hit) {
+                   float tCellEnter, float tCellExit, inout Hit hit) {
     float t;
     if (HAS_SPHERES && id < header.idEnd[kKindSphere]) {
         uint sphere = id; // the first kind: its ids start at 0
@@ -136,7 +147,8 @@ void testPrimitive(uint id, vec3 origin, vec3 dir, WatertightRay wray, bool anyH
         // then loads one word, not the whole idEnd vector, per test (that cost 7% on objects).
         testTriangle(id - header.idEnd[kKindTriangle - 1u], origin, dir, wray, hit);
     } else if (HAS_INSTANCES) { // the last kind
-        testInstance(id - header.idEnd[kKindInstance - 1u], origin, dir, anyHit, hit);
+        testInstance(id - header.idEnd[kKindInstance - 1u], origin, dir, anyHit, tCellEnter,
+                     tCellExit, hit);
     }
 }
 

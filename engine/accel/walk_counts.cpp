@@ -28,10 +28,13 @@ bool intersectTriangle(const Triangle &tri, const Ray &ray, const reference::Wat
 }
 
 // An instance's nearest hit closer than tMax: the ray in its prototype's space (where t is the
-// same: the placement is a similarity) through the prototype's grid, as the tracer walks it.
-// The direction there is not unit length; the watertight test does not need it to be.
+// same: the placement is a similarity) through the prototype's grid, as the tracer walks it:
+// only the cells that the part of the ray in the scene grid's cell (tCellEnter to tCellExit)
+// crosses (traverse.glsl, testInstance). The direction there is not unit length; the
+// watertight test does not need it to be.
 bool intersectInstance(const Scene &scene, const Grid &grid, const Instance &instance,
-                       const Ray &ray, double tMax, double &t, Tally &tally) {
+                       const Ray &ray, double tCellEnter, double tCellExit, double tMax, double &t,
+                       Tally &tally) {
     const MeshPrototype &prototype = scene.prototypes[instance.prototype];
     const Grid &meshGrid = grid.meshGrids[instance.prototype];
     glm::dmat3 toObject = glm::transpose(instance.rotation) / instance.scale;
@@ -39,6 +42,8 @@ bool intersectInstance(const Scene &scene, const Grid &grid, const Instance &ins
     reference::WatertightRay wray = reference::makeWatertightRay(local.dir);
     double nearest = tMax;
     walkGrid(meshGrid, local.origin, local.dir, tMax, [&](uint32_t cell, double, double tExit) {
+        if (tExit < tCellEnter)
+            return true; // before the scene cell: the tracer starts past it
         ++tally.cells;
         for (uint32_t k = meshGrid.cellStart[cell]; k < meshGrid.cellStart[cell + 1]; ++k) {
             ++tally.tests;
@@ -47,7 +52,7 @@ bool intersectInstance(const Scene &scene, const Grid &grid, const Instance &ins
                                   nearest, tHit))
                 nearest = tHit;
         }
-        return nearest > tExit;
+        return nearest > tExit && tExit < tCellExit;
     });
     t = nearest;
     return nearest < tMax;
@@ -55,8 +60,8 @@ bool intersectInstance(const Scene &scene, const Grid &grid, const Instance &ins
 
 // The nearest hit of primitive `id` closer than tMax, with the reference's exact tests.
 bool intersectId(const Scene &scene, const Grid &grid, const PrimitiveIds &ids, uint32_t id,
-                 const Ray &ray, const reference::WatertightRay &wray, double tMax, double &t,
-                 Tally &tally) {
+                 const Ray &ray, const reference::WatertightRay &wray, double tCellEnter,
+                 double tCellExit, double tMax, double &t, Tally &tally) {
     PrimitiveIds::Decoded d = ids.decode(id);
     if (d.kind == gpu::kKindSphere) {
         const Sphere &s = scene.spheres[d.index];
@@ -65,7 +70,8 @@ bool intersectId(const Scene &scene, const Grid &grid, const PrimitiveIds &ids, 
     if (d.kind == gpu::kKindTriangle)
         return intersectTriangle(scene.triangles[d.index], ray, wray, tMax, t);
     if (d.kind == gpu::kKindInstance)
-        return intersectInstance(scene, grid, scene.instances[d.index], ray, tMax, t, tally);
+        return intersectInstance(scene, grid, scene.instances[d.index], ray, tCellEnter, tCellExit,
+                                 tMax, t, tally);
     // A new finite kind needs its test here (docs/design.md, "Adding a primitive").
     throw Error("countWalks has no test for primitive kind " + std::to_string(d.kind));
 }
@@ -86,17 +92,19 @@ WalkCounts countWalks(const Scene &scene, const Grid &grid, double aspect, int c
             Ray ray = cameraRay(frame, glm::dvec2(x + 0.5, y + 0.5));
             reference::WatertightRay wray = reference::makeWatertightRay(ray.dir);
             double nearest = std::numeric_limits<double>::infinity();
-            walkGrid(grid, ray.origin, ray.dir, nearest, [&](uint32_t cell, double, double tExit) {
-                ++tally.cells;
-                for (uint32_t k = grid.cellStart[cell]; k < grid.cellStart[cell + 1]; ++k) {
-                    ++tally.tests;
-                    double t;
-                    if (intersectId(scene, grid, ids, grid.cellPrimitives[k], ray, wray, nearest, t,
-                                    tally))
-                        nearest = t;
-                }
-                return nearest > tExit; // on until the nearest hit is in a cell reached
-            });
+            walkGrid(grid, ray.origin, ray.dir, nearest,
+                     [&](uint32_t cell, double tEnter, double tExit) {
+                         ++tally.cells;
+                         for (uint32_t k = grid.cellStart[cell]; k < grid.cellStart[cell + 1];
+                              ++k) {
+                             ++tally.tests;
+                             double t;
+                             if (intersectId(scene, grid, ids, grid.cellPrimitives[k], ray, wray,
+                                             tEnter, tExit, nearest, t, tally))
+                                 nearest = t;
+                         }
+                         return nearest > tExit; // on until the nearest hit is in a cell reached
+                     });
             ++counts.rays;
             counts.stopped = double(tally.tests) > stopAbove;
         }

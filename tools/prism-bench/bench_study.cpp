@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "bench_profile.h"
 #include "core/error.h"
@@ -11,6 +12,7 @@
 #include "embree_baseline.h"
 #include "io/image_writer.h"
 #include "render/ray_tracer.h"
+#include "scene/instance_flattening.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_origin.h"
 
@@ -50,15 +52,22 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
                                   const std::function<void(const std::string &)> &progress) {
     std::vector<BenchResult> all;
     for (const std::string &path : scenes) {
-        Scene scene = loadScene(path);
+        Scene sourceScene = loadScene(path);
         if (!settings.keepOrigin)
-            centerOnCamera(scene);
+            centerOnCamera(sourceScene);
+        const Scene &scene = sourceScene;
         std::string name = std::filesystem::path(path).stem().string();
         std::vector<BenchResult> results;
         std::vector<std::unique_ptr<RayTracer>> tracers;
         std::vector<Grid> grids;
+        std::optional<Scene> flat; // the scene with its instances written out, once
+        std::vector<const Scene *> variantScenes;
         for (const BenchVariant &variant : variants) {
             progress(name + " " + variant.name + ": build + warm-up");
+            if (variant.flattenInstances && !flat)
+                flat = flattenInstances(sourceScene);
+            const Scene &scene = variant.flattenInstances ? *flat : sourceScene;
+            variantScenes.push_back(&scene);
             BenchResult r;
             r.scene = name;
             r.variant = variant.name;
@@ -79,6 +88,8 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
             options.maxDepth = settings.maxDepth;
             auto tracer = std::make_unique<RayTracer>(context, scene, grid, settings.width,
                                                       settings.height, options);
+            for (const ArrayBytes &a : tracer->sceneArrayBytes())
+                r.sceneBytes += a.bytes;
             FrameResult warm = tracer->renderFrame(scene.camera, settings.samplesPerPixel);
             r.rays = warm.rays;
             if (!settings.imageDir.empty())
@@ -118,7 +129,8 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
         }
         for (size_t v = 0; v < variants.size() && settings.profile; ++v) {
             progress(name + " " + variants[v].name + ": profile");
-            results[v].profile = profileVariant(context, scene, grids[v], variants[v], settings);
+            results[v].profile =
+                profileVariant(context, *variantScenes[v], grids[v], variants[v], settings);
         }
         all.insert(all.end(), results.begin(), results.end());
     }

@@ -39,7 +39,8 @@ struct BenchResult {
     std::string grid;
     uint32_t maxPerCell = 0;
     uint64_t gridBytes = 0;
-    WalkCounts walk; // the grid's work per primary ray, counted on the CPU
+    uint64_t sceneBytes = 0; // every array on the device, the grid's included
+    WalkCounts walk;         // the grid's work per primary ray, counted on the CPU
     double buildMs = 0.0;
     std::vector<double> frameMs; // GPU time of each timed frame (Embree: wall time)
     RayCounts rays;              // of one frame

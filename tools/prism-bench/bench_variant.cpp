@@ -51,13 +51,15 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.tracer.fixedRayOffset = 0.0f;
         } else if (token.rfind("offset=", 0) == 0) {
             v.tracer.fixedRayOffset = parsePositive(text, token.substr(7), "offset");
+        } else if (token == "flat") {
+            v.flattenInstances = true;
         } else if (token == "triangle=watertight" || token == "triangle=mt") {
             v.tracer.mollerTrumbore = token == "triangle=mt";
         } else {
             throw Error("variant " + text + ": unknown part '" + token +
                         "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
                         "no-reflection, no-refraction, no-shadows, texel, storage, resumable, "
-                        "offset=relative|E, triangle=watertight|mt; join with +)");
+                        "offset=relative|E, triangle=watertight|mt, flat; join with +)");
         }
     }
     return v;

@@ -4,7 +4,8 @@
 // "off", "no-shadows", "storage" or combinations joined by '+' ("grid=30+no-reflection").
 // For the studies (docs/studies) only, methods Prism replaced: "offset=E" (a fixed ray offset
 // of E scene units, as the original had; "offset=relative" is Prism's) and "triangle=mt"
-// (Moller-Trumbore; "triangle=watertight" is Prism's).
+// (Moller-Trumbore; "triangle=watertight" is Prism's). "flat" writes a scene's instances out as
+// plain triangles first (what instancing saves, in memory and in time).
 #include <string>
 
 #include "accel/grid.h"
@@ -16,6 +17,7 @@ struct BenchVariant {
     std::string name;
     GridOptions grid;
     TracerOptions tracer;
+    bool flattenInstances = false;
 };
 
 // Throws prism::Error naming the bad token.

@@ -96,6 +96,7 @@ nlohmann::json toJson(const BenchResult &r) {
         {"grid", r.grid},
         {"max_per_cell", r.maxPerCell},
         {"grid_bytes", r.gridBytes},
+        {"scene_bytes", r.sceneBytes},
         {"cells_per_primary_ray", r.walk.cellsPerRay},
         {"tests_per_primary_ray", r.walk.testsPerRay},
         {"build_ms", r.buildMs},
@@ -134,7 +135,9 @@ int main(int argc, char **argv) {
            "read), resumable (the loop-budget tracer from the first frame); join parts with +. "
            "For the studies (docs/studies) only, methods Prism replaced: offset=E (the "
            "original's fixed ray offset of E scene units; offset=relative is Prism's) and "
-           "triangle=mt (Moller-Trumbore; triangle=watertight is Prism's)")
+           "triangle=mt (Moller-Trumbore; triangle=watertight is Prism's). flat: the scene's "
+           "instances "
+           "written out as plain triangles (what instancing saves)")
         ->default_val(variantList);
     app.add_flag("--keep-origin", settings.keepOrigin,
                  "For the studies: trace each scene in its file's coordinates instead of moving "
