@@ -27,6 +27,10 @@ inline Scene transformed(Scene scene, double scale, glm::dvec3 offset = glm::dve
     for (Triangle &t : scene.triangles)
         for (glm::dvec3 &p : t.p)
             p = move(p);
+    for (Instance &i : scene.instances) { // prototypes stay in their own space
+        i.translation = move(i.translation);
+        i.scale *= scale;
+    }
     return scene;
 }
 
