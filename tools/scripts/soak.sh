@@ -83,13 +83,13 @@ cleanup() {
 trap cleanup EXIT
 trap 'exit 130' INT TERM
 
-# The scratch copy: its mesh and texture paths, relative to the scene's folder, made absolute
-# so that they still resolve from $work (comment lines are left alone).
+# The scratch copy: its mesh, environment, texture and map paths, relative to the scene's
+# folder, made absolute so that they still resolve from $work (comment lines are left alone).
 scene_dir=$(cd "$(dirname "$scene")" && pwd)
 copy=$work/$(basename "$scene")
 sed -E -e '/^[[:space:]]*#/b' \
-    -e "s#^([[:space:]]*mesh[[:space:]]+\"?)([^/\"[:space:]])#\\1$scene_dir/\\2#" \
-    -e "s#([[:space:]]texture[[:space:]]+\"?)([^/\"[:space:]])#\\1$scene_dir/\\2#g" \
+    -e "s#^([[:space:]]*(mesh|environment)[[:space:]]+\"?)([^/\"[:space:]])#\\1$scene_dir/\\3#" \
+    -e "s#([[:space:]](texture|norm|bump)[[:space:]]+\"?)([^/\"[:space:]])#\\1$scene_dir/\\3#g" \
     "$scene" > "$copy"
 
 log=build/soak-last.log
