@@ -130,6 +130,31 @@ TEST_F(InstancedRender, DepthAndNormalsAreThoseOfTheFlattenedScene) {
     EXPECT_LE(far, kMatchMaxDifferingPixels);
 }
 
+// A hit past the prototype cell being walked must wait for nearer ones in the cells after it.
+// A long ramp runs through every cell of its prototype's grid; a ray aimed at a block standing on
+// it meets the ramp in the first cell it enters, but hits it only behind the block. A walk that
+// stopped at the first cell with any hit would show the ramp where the blocks are. Measured: no
+// pixel over 0.02 (largest 0.000001); with that walk planted, 16 pixels off by up to 0.997.
+TEST_F(InstancedRender, AHitPastTheCellWaitsForNearerOnes) {
+    Scene scene = sceneWithDefaultMaterial();
+    uint32_t ramp = addMaterial(scene, "ramp", {0.6f, 0.6f, 0.65f});
+    uint32_t block = addMaterial(scene, "block", {0.9f, 0.3f, 0.2f});
+    Scene shapes;
+    glm::vec3 nearLeft(-2.0f, 0.0f, 4.0f), nearRight(2.0f, 0.0f, 4.0f);
+    glm::vec3 farLeft(-2.0f, 0.8f, -4.0f), farRight(2.0f, 0.8f, -4.0f);
+    addTriangle(shapes, nearLeft, nearRight, farRight, ramp);
+    addTriangle(shapes, nearLeft, farRight, farLeft, ramp);
+    for (float z : {2.0f, 0.0f, -2.0f}) // standing on the ramp (its height at z: 0.1 (4 - z))
+        addOctahedron(shapes, {0.3f * z, 0.1f * (4.0f - z) + 0.35f, z}, 0.35f, block);
+    scene.prototypes.push_back(MeshPrototype{"ramp", shapes.triangles});
+    scene.instances.push_back(placed(1.0, axisRotation(1, 10.0), {0.0, 0.0, 0.0}));
+    scene.camera.eye = {0.0, 1.2, 7.0};
+    scene.camera.look = {0.0, 0.4, -1.0};
+    scene.camera.fovDegrees = 45.0f;
+    scene.lights.push_back(Light{{-3.0, 6.0, 6.0}, {1.0f, 1.0f, 1.0f}, 0.0f});
+    expectMatchesReference(context(), scene);
+}
+
 // Scale and place: the two-level walk at 1e-3 and 1e3 times the size, and 1e6 from the origin,
 // renders the unit scene's picture (the tolerances of stability_test.cpp: 0.5% of pixels off
 // by 0.02 when scaled, 0.1% off by 2/255 when moved). The prototypes keep their own space; only
