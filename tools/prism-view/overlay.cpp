@@ -95,6 +95,8 @@ bool Overlay::build(const OverlayStats &s, FeatureToggles &toggles, bool visible
         ImGui::Text("samples %u / %u%s", s.samples, s.samplesTarget,
                     s.samples >= s.samplesTarget ? " (converged)" : "");
         ImGui::Text("grid %s", s.grid.c_str());
+        ImGui::TextUnformatted(s.geometry.c_str());
+        ImGui::Text("%.1f MB on the device", double(s.sceneBytes) / 1e6);
         if (s.traceScale > 1)
             ImGui::Text("%ux%u (1/%u while moving)  %s", s.width, s.height, s.traceScale,
                         s.presentMode.c_str());

@@ -437,6 +437,34 @@ void Viewer::saveScreenshot(const std::filesystem::path &base) {
     }
 }
 
+namespace {
+
+// "4 spheres, 1 plane, 12176 triangles, 3 instances of 4968": the kinds the scene has, an
+// instance count followed by the triangles its prototypes store.
+std::string geometryText(const Scene &scene) {
+    std::string text;
+    auto add = [&](size_t count, const char *one, const char *many) {
+        if (count == 0)
+            return;
+        text +=
+            (text.empty() ? "" : ", ") + std::to_string(count) + " " + (count == 1 ? one : many);
+    };
+    add(scene.spheres.size(), "sphere", "spheres");
+    add(scene.planes.size(), "plane", "planes");
+    add(scene.triangles.size(), "triangle", "triangles");
+    if (!scene.instances.empty()) {
+        size_t stored = 0;
+        for (const MeshPrototype &m : scene.prototypes)
+            stored += m.triangles.size();
+        text += (text.empty() ? "" : ", ") + std::to_string(scene.instances.size()) +
+                (scene.instances.size() == 1 ? " instance" : " instances") + " of " +
+                std::to_string(stored) + " triangles";
+    }
+    return text.empty() ? "nothing to hit" : text;
+}
+
+} // namespace
+
 OverlayStats Viewer::overlayStats() const {
     OverlayStats s;
     s.fps = stats_.fps();
@@ -445,6 +473,9 @@ OverlayStats Viewer::overlayStats() const {
     s.samples = samples_;
     s.samplesTarget = options_.samplesPerPixel;
     s.grid = toggles_.grid ? gridText(grid_) : "off (1 cell)";
+    s.geometry = geometryText(scene_);
+    for (const ArrayBytes &a : tracer_->sceneArrayBytes())
+        s.sceneBytes += a.bytes;
     s.device = context_->deviceName();
     s.presentMode = vk::presentModeName(swapchain_->presentMode());
     s.width = tracer_->width();
