@@ -16,6 +16,11 @@ struct Surface {
     // normal and bump maps (surface_maps.glsl); set only where HAS_SURFACE_MAPS.
     vec3 dpdu;
     vec3 dpdv;
+    // An instance's triangle is known only as well as its placement: in the prototype's space
+    // (where the walk tests it) its points are floats of magnitude |v|, so in the scene its error
+    // grows with scale * |v|, however near the camera the hit is. Ray offsets take this as a
+    // floor for max|P| (offsetOrigin); 0 for everything else.
+    float offsetFloor;
 };
 
 // Hanika 2021 (surface_reference.h): p lifted onto each vertex's tangent plane where below it,
@@ -62,6 +67,7 @@ vec3 placeNormal(vec4 rows[3], vec3 n) {
 // to |P|, which is what the relative ray offset assumes.
 Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
     Surface s;
+    s.offsetFloor = 0.0;
     if (HAS_SPHERES && hit.kind == kKindSphere) {
         GpuSphere sphere = sphereAt(hit.index);
         vec4 cr = sphere.centerRadius;
@@ -99,6 +105,8 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         if (instanced) { // the prototype's triangle, placed: then all is as for the scene's own
             for (uint r = 0u; r < 3u; ++r)
                 toWorld[r] = instanceRow(hit.instance, 3u + r);
+            vec3 m = max(abs(tri.v0.xyz), max(abs(tri.v1.xyz), abs(tri.v2.xyz)));
+            s.offsetFloor = length(toWorld[0].xyz) * max(m.x, max(m.y, m.z)); // scale * max|v|
             tri.v0.xyz = placePoint(toWorld, tri.v0.xyz);
             tri.v1.xyz = placePoint(toWorld, tri.v1.xyz);
             tri.v2.xyz = placePoint(toWorld, tri.v2.xyz);
@@ -164,11 +172,13 @@ vec3 textureColor(uint textureIndex, vec2 uv) {
 }
 
 // Offset origin for a ray leaving `position` in `dir`: along the facing geometric normal, by an
-// amount relative to max|P_i| (never a fixed epsilon). FIXED_RAY_OFFSET > 0 is the original's
-// fixed epsilon, kept for the offsets study only.
-vec3 offsetOrigin(vec3 position, vec3 facingNormal, vec3 dir) {
+// amount relative to max|P_i| (never a fixed epsilon), or to the surface's offsetFloor where
+// that is larger (an instance's). FIXED_RAY_OFFSET > 0 is the original's fixed epsilon, kept
+// for the offsets study only.
+vec3 offsetOrigin(vec3 position, float offsetFloor, vec3 facingNormal, vec3 dir) {
     vec3 a = abs(position);
-    float eps = max(max(a.x, max(a.y, a.z)), float(PRISM_OFFSET_FLOOR)) * float(PRISM_OFFSET_RELATIVE);
+    float magnitude = max(max(a.x, max(a.y, a.z)), HAS_INSTANCES ? offsetFloor : 0.0);
+    float eps = max(magnitude, float(PRISM_OFFSET_FLOOR)) * float(PRISM_OFFSET_RELATIVE);
     if (FIXED_RAY_OFFSET > 0.0)
         eps = FIXED_RAY_OFFSET;
     return position + (dot(dir, facingNormal) >= 0.0 ? eps : -eps) * facingNormal;

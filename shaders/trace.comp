@@ -88,7 +88,7 @@ vec3 directLight(Surface s, vec3 facingGeometric, vec3 smoothN, vec3 n, vec3 vie
                 vec3 horizon = s.smoothed ? smoothN : facingGeometric;
                 visible = dot(target - from, horizon) > 0.0;
                 if (visible) {
-                    vec3 origin = offsetOrigin(from, horizon, target - from);
+                    vec3 origin = offsetOrigin(from, s.offsetFloor, horizon, target - from);
                     vec3 toTarget = target - origin;
                     float distance = length(toTarget);
                     gShadowRays += 1u;
@@ -171,7 +171,7 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
             if (ray.depth < maxDepth) {
                 vec3 reflected = reflect(ray.dir, n);
                 if (HAS_REFLECTION && materialReflect(m) > 0.0)
-                    pushRay(offsetOrigin(s.position, ng, reflected), reflected,
+                    pushRay(offsetOrigin(s.position, s.offsetFloor, ng, reflected), reflected,
                             ray.weight * materialReflect(m), ray.depth + 1u);
                 if (HAS_TRANSMISSION && materialTransmit(m) > 0.0) {
                     float ior = materialIor(m);
@@ -181,7 +181,7 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
                     float k = 1.0 - eta * eta * (1.0 - cosI * cosI);
                     vec3 weight = ray.weight * materialTransmit(m);
                     if (k < 0.0) { // total internal reflection
-                        pushRay(offsetOrigin(s.position, ng, reflected), reflected, weight,
+                        pushRay(offsetOrigin(s.position, s.offsetFloor, ng, reflected), reflected, weight,
                                 ray.depth + 1u);
                     } else {
                         float f0 = (ior - 1.0) / (ior + 1.0);
@@ -189,9 +189,9 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
                         float x = max(0.0, 1.0 - cosI);
                         float fresnel = f0 + (1.0 - f0) * (x * x) * (x * x) * x; // Schlick
                         vec3 refracted = normalize(eta * ray.dir + (eta * cosI - sqrt(k)) * n);
-                        pushRay(offsetOrigin(s.position, ng, reflected), reflected,
+                        pushRay(offsetOrigin(s.position, s.offsetFloor, ng, reflected), reflected,
                                 weight * fresnel, ray.depth + 1u);
-                        pushRay(offsetOrigin(s.position, ng, refracted), refracted,
+                        pushRay(offsetOrigin(s.position, s.offsetFloor, ng, refracted), refracted,
                                 weight * (1.0 - fresnel), ray.depth + 1u);
                     }
                 }

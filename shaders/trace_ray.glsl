@@ -48,6 +48,7 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
             // Where the ray enters the current cell (instances walk only that part of it). A
             // resumed regular-grid walk does not know it: from the grid's entry is safe.
             float tCellEnter = tEnter;
+            bool progressed = !(RESUMABLE && resume.resuming); // a test since resuming
             while (walking) {
                 uint cell, first;
                 float tCellExit;
@@ -90,8 +91,13 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
 #else
                 for (uint k = first; k < end; ++k) {
 #endif
-                    if (RESUMABLE && HAS_INSTANCES && budgetLeft() < kInstanceWalkReserve) {
-                        // Not enough left for an instance's walk: go on from here next time.
+                    // Not enough left for this test (an instance's walk needs the reserve):
+                    // go on from here next time. A resumed walk always makes its first test,
+                    // so that a replay that spent most of the budget cannot stall the sample.
+                    uint id = cellPrimitiveAt(k);
+                    bool instanceNext = HAS_INSTANCES && id >= header.idEnd[kKindTriangle];
+                    if (RESUMABLE && HAS_INSTANCES && progressed &&
+                        budgetLeft() < (instanceNext ? kInstanceWalkReserve : 4u)) {
                         resume.interrupted = true;
                         resume.cell = ADAPTIVE_GRID ? entryVoxel : walk.cell;
                         resume.t = ADAPTIVE_GRID ? vec3(entryT, 0.0, 0.0) : walk.tNext;
@@ -103,8 +109,9 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
                     // none does (masked; its lanes charge their own walks' passes).
                     if (RESUMABLE && HAS_INSTANCES)
                         chargeBudget(4u);
-                    testPrimitive(cellPrimitiveAt(k), origin, dir, wray, TRACE_RAY_ANY_HIT != 0,
-                                  tCellEnter, tCellExit, hit);
+                    progressed = true;
+                    testPrimitive(id, origin, dir, wray, TRACE_RAY_ANY_HIT != 0, tCellEnter,
+                                  tCellExit, hit);
                 }
                 if (PROFILE_WALK_DETAIL)
                     profileAdd(kPhasePrimitiveTests, testsStart);

@@ -86,7 +86,11 @@ void RayTracer::traceSampleResumably(const Camera &camera, uint32_t sample,
                                 " pixels cannot be finished by resumable tracing: a sample "
                                 "needs more ray walks than it can log (" +
                                 std::to_string(plan.walkLogSize) +
-                                ") or replay in one dispatch; use a lower --depth");
+                                ") or replay in one dispatch; use a lower --depth" +
+                                (features_.has(gpu::kKindInstance)
+                                     ? ", or a finer --grid (one instance's walk, which is "
+                                       "never split, may be longer than a dispatch allows)"
+                                     : ""));
                 if (counters->unfinishedPixels == 0)
                     break;
             }
