@@ -8,11 +8,11 @@
 namespace prism {
 namespace {
 
-// Material indices travel in float lanes (gpu::indexFromFloat); floats hold integers exactly
-// below 2^24.
-float indexAsFloat(uint32_t index) {
+// Material and prototype indices travel in float lanes (gpu::indexFromFloat); floats hold
+// integers exactly below 2^24.
+float indexAsFloat(uint32_t index, const char *what = "materials") {
     if (index >= (1u << 24))
-        throw Error("scene has more than 16,777,216 materials");
+        throw Error(std::string("scene has more than 16,777,216 ") + what);
     return static_cast<float>(index);
 }
 
@@ -54,7 +54,7 @@ void packInstances(const Scene &scene, const Grid &grid, const std::vector<uint3
             {affineRow(toObject, toObjectOffset, 0), affineRow(toObject, toObjectOffset, 1),
              affineRow(toObject, toObjectOffset, 2), affineRow(toWorld, i.translation, 0),
              affineRow(toWorld, i.translation, 1), affineRow(toWorld, i.translation, 2),
-             glm::vec4(indexAsFloat(i.prototype), material, 0.0f, 0.0f)});
+             glm::vec4(indexAsFloat(i.prototype, "prototypes"), material, 0.0f, 0.0f)});
     }
 }
 

@@ -418,6 +418,12 @@ void place(SceneBuilder &builder, const DirectiveArgs &args) {
     if (!placedBoxFitsFloat(instance, entry))
         throw LineError("the placement takes the bounding box of prototype '" + name +
                         "' out of the range of a 32-bit float");
+    // The tracer takes rays into the prototype's space by the inverse map (1 / scale, and the
+    // translation over the scale), in 32-bit floats too.
+    if (!fitsFloat(glm::dvec3(1.0 / instance.scale)) ||
+        !fitsFloat(instance.translation / instance.scale))
+        throw LineError("'scale' " + formatNumber(instance.scale) +
+                        " is too small for the placement to be undone in 32-bit floats");
     checkInstanceLimit(builder.scene.instances.size() + 1, builder.limits.maxInstances);
     builder.scene.instances.push_back(instance);
 }

@@ -271,6 +271,11 @@ TEST(Instances, InstanceErrorsNameTheirLine) {
     expectError("mesh tri.obj as b as c\n", 3, "'as' is given twice");
     // The box (0,0,0)-(1,1,0), centred, reaches half a unit each way in x and y: at scale 1e38
     // and 3e38 along an axis a corner passes FLT_MAX (3.4e38).
+    // The tracer's inverse map, 1 / scale and translation / scale, must fit a float as well.
+    expectError("place a scale 1e-39\n", 3,
+                "'scale' 1e-39 is too small for the placement to be undone in 32-bit floats");
+    expectError("place a scale 1e-10 translate 1e30 0 0\n", 3,
+                "'scale' 1e-10 is too small for the placement to be undone in 32-bit floats");
     expectError("place a scale 1e38 translate 3e38 0 0\n", 3,
                 "the placement takes the bounding box of prototype 'a' out of the range of a "
                 "32-bit float");
