@@ -145,8 +145,9 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
             triangleTangents(tri.v1.xyz - tri.v0.xyz, tri.v2.xyz - tri.v0.xyz, d1, d2, s.dpdu,
                              s.dpdv);
         s.material = triangleMaterial(tri);
-        if (instanced && instanceRow(hit.instance, 6u).y >= 0.0) // the placement's material
-            s.material = indexFromFloat(instanceRow(hit.instance, 6u).y);
+        vec4 info = instanced ? instanceRow(hit.instance, 6u) : vec4(0.0);
+        if (instanced && instanceOverridesMaterial(info)) // the placement's material
+            s.material = instanceMaterial(info);
     }
     return s;
 }

@@ -95,7 +95,7 @@ void testInstance(uint inst, vec3 origin, vec3 dir, bool anyHit, float tCellEnte
     vec3 o = vec3(dot(r0.xyz, origin) + r0.w, dot(r1.xyz, origin) + r1.w,
                   dot(r2.xyz, origin) + r2.w);
     vec3 d = vec3(dot(r0.xyz, dir), dot(r1.xyz, dir), dot(r2.xyz, dir));
-    GpuMeshGrid grid = meshGridAt(indexFromFloat(instanceRow(inst, 6u).x));
+    GpuMeshGrid grid = meshGridAt(instancePrototype(instanceRow(inst, 6u)));
     vec3 invD = 1.0 / d;
     float tEnter, tExit;
     bool crosses = clipToBox(grid.gridMin.xyz, grid.gridMax.xyz, o, invD, tEnter, tExit);

@@ -121,7 +121,7 @@ struct Scene {
     std::vector<Texture> textures;
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;
-    std::vector<Triangle> triangles;      // in scene space
+    std::vector<Triangle> triangles;       // in scene space
     std::vector<MeshPrototype> prototypes; // drawn only where instances place them
     std::vector<Instance> instances;
     std::vector<std::string> warnings; // "FILE:LINE: warning: ..." lines, in order
@@ -130,6 +130,13 @@ struct Scene {
     // its prototype's triangles live in a grid of their own.
     size_t finitePrimitiveCount() const {
         return spheres.size() + triangles.size() + instances.size();
+    }
+    // Triangles the prototypes store (once each, however often they are placed).
+    size_t prototypeTriangleCount() const {
+        size_t count = 0;
+        for (const MeshPrototype &m : prototypes)
+            count += m.triangles.size();
+        return count;
     }
 };
 

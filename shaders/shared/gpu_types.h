@@ -99,14 +99,15 @@ struct GpuInstance {
     vec4 toWorld2;
     vec4 info; // x: the prototype (its GpuMeshGrid), y: material for every face (-1: its own)
 };
-PRISM_INLINE uint instancePrototype(PRISM_IN(GpuInstance) i) {
-    return indexFromFloat(i.info.x);
+// On the info vector alone: the tracer reads an instance a row at a time (instanceRow).
+PRISM_INLINE uint instancePrototype(PRISM_IN(vec4) info) {
+    return indexFromFloat(info.x);
 }
-PRISM_INLINE bool instanceOverridesMaterial(PRISM_IN(GpuInstance) i) {
-    return i.info.y >= 0.0f;
+PRISM_INLINE bool instanceOverridesMaterial(PRISM_IN(vec4) info) {
+    return info.y >= 0.0f;
 }
-PRISM_INLINE uint instanceMaterial(PRISM_IN(GpuInstance) i) {
-    return indexFromFloat(i.info.y);
+PRISM_INLINE uint instanceMaterial(PRISM_IN(vec4) info) {
+    return indexFromFloat(info.y);
 }
 
 // A prototype's own regular grid, in its space (accel/grid.h, Grid::meshGrids). Its cells'

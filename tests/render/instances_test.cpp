@@ -314,8 +314,8 @@ TEST(InstancePacking, AThousandPlacementsStoreTheMeshOnce) {
     glm::vec3 back =
         apply(i.toObject0, i.toObject1, i.toObject2, apply(i.toWorld0, i.toWorld1, i.toWorld2, p));
     EXPECT_LT(glm::length(back - p), 1e-5f);
-    EXPECT_EQ(gpu::instancePrototype(i), 0u);
-    EXPECT_FALSE(gpu::instanceOverridesMaterial(i));
+    EXPECT_EQ(gpu::instancePrototype(i.info), 0u);
+    EXPECT_FALSE(gpu::instanceOverridesMaterial(i.info));
 }
 
 } // namespace

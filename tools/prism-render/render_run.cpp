@@ -215,13 +215,11 @@ void runRender(const RenderOptions &o) {
             {"resume_dispatches", out.resumeDispatches}};
         // Instances: the triangles stored (the scene's and each prototype's once) against the
         // triangles the placements draw.
-        uint64_t prototypeTriangles = 0, placedTriangles = 0;
-        for (const MeshPrototype &m : scene.prototypes)
-            prototypeTriangles += m.triangles.size();
+        uint64_t placedTriangles = 0;
         for (const Instance &i : scene.instances)
             placedTriangles += scene.prototypes[i.prototype].triangles.size();
         stats["triangles"] = {{"scene", scene.triangles.size()},
-                              {"prototypes", prototypeTriangles},
+                              {"prototypes", scene.prototypeTriangleCount()},
                               {"instances", scene.instances.size()},
                               {"placed", placedTriangles}};
         if (!out.sceneArrays.empty()) {

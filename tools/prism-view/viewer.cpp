@@ -452,14 +452,10 @@ std::string geometryText(const Scene &scene) {
     add(scene.spheres.size(), "sphere", "spheres");
     add(scene.planes.size(), "plane", "planes");
     add(scene.triangles.size(), "triangle", "triangles");
-    if (!scene.instances.empty()) {
-        size_t stored = 0;
-        for (const MeshPrototype &m : scene.prototypes)
-            stored += m.triangles.size();
+    if (!scene.instances.empty())
         text += (text.empty() ? "" : ", ") + std::to_string(scene.instances.size()) +
                 (scene.instances.size() == 1 ? " instance" : " instances") + " of " +
-                std::to_string(stored) + " triangles";
-    }
+                std::to_string(scene.prototypeTriangleCount()) + " triangles";
     return text.empty() ? "nothing to hit" : text;
 }
 
