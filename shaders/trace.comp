@@ -57,7 +57,7 @@ vec2 samplePosition(uvec2 pixel, uint pixelIndex, uint sampleIndex) {
 vec3 directLight(Surface s, vec3 facingGeometric, vec3 smoothN, vec3 n, vec3 view, vec3 color,
                  GpuMaterial m, uint pixelIndex, uint sampleIndex, uint depth) {
     vec3 result = materialAmbient(m) * color * header.ambient.rgb;
-    uint lights = headerLightCount(header);
+    uint lights = headerLightCount(header.counts);
     for (uint l = 0u; l < lights; ++l) {
         // resume.glsl: the light's loop pass, and the strata loops of an area light's sample
         // (sampling.h: from sqrt's estimate, each runs at most twice, three times a sample)

@@ -36,7 +36,11 @@ layout(std430, set = 0, binding = kBindingResumeRecords) buffer ResumeRecordBuff
     GpuResumeRecord resumeRecords[];
 };
 layout(std430, set = 0, binding = kBindingWalkLog) buffer WalkLogBuffer { uvec4 walkLog[]; };
-layout(std430, set = 0, binding = kBindingHeader) readonly buffer HeaderBuffer {
+// The header is a uniform buffer: lavapipe reads a uniform block at a uniform offset with one
+// scalar load, where a storage buffer costs a loop over the 8 lanes, each with a bounds check,
+// at every read (and the walk reads the header at every step and test). std140 and std430
+// agree on GpuSceneHeader: it has only 16-byte vectors.
+layout(std140, set = 0, binding = kBindingHeader) uniform HeaderBlock {
     GpuSceneHeader header;
 };
 layout(std430, set = 0, binding = kBindingSpheres) readonly buffer SphereBuffer {
@@ -90,6 +94,11 @@ layout(set = 0, binding = kBindingTriangleShadingTexels) uniform samplerBuffer s
 layout(set = 0, binding = kBindingGridEntryTexels) uniform usamplerBuffer gridEntryTexels;
 layout(set = 0, binding = kBindingCellBoxTexels) uniform usamplerBuffer cellBoxTexels;
 layout(set = 0, binding = kBindingInstanceTexels) uniform samplerBuffer instanceTexels;
+layout(set = 0, binding = kBindingPlaneTexels) uniform samplerBuffer planeTexels;
+layout(set = 0, binding = kBindingMaterialTexels) uniform samplerBuffer materialTexels;
+layout(set = 0, binding = kBindingLightTexels) uniform samplerBuffer lightTexels;
+layout(set = 0, binding = kBindingMeshGridTexels) uniform usamplerBuffer meshGridTexels;
+layout(set = 0, binding = kBindingTextureTexels) uniform usamplerBuffer textureInfoTexels;
 
 layout(push_constant) uniform FrameBlock { GpuFrameParams frame; };
 
@@ -149,23 +158,40 @@ vec4 textureTexel(uint i) {
     return TEXEL_BUFFERS ? texelFetch(imageTexels, int(i)) : texelArray[i];
 }
 
-// Storage-only arrays: small (one element per plane, material, light, texture), refused by name
-// on the host when larger than a storage binding may be.
+// The small arrays: one element per plane, material, light, prototype and texture.
 vec4 planeEquation(uint i) { // xyz unit normal, w offset: all the intersection loop needs
-    return planeArray[i].normalOffset;
+    return TEXEL_BUFFERS ? texelFetch(planeTexels, int(2u * i)) : planeArray[i].normalOffset;
 }
 GpuPlane planeAt(uint i) {
+    if (TEXEL_BUFFERS)
+        return GpuPlane(texelFetch(planeTexels, int(2u * i)),
+                        texelFetch(planeTexels, int(2u * i + 1u)));
     return planeArray[i];
 }
 GpuMaterial materialAt(uint i) {
+    if (TEXEL_BUFFERS)
+        return GpuMaterial(
+            texelFetch(materialTexels, int(4u * i)), texelFetch(materialTexels, int(4u * i + 1u)),
+            texelFetch(materialTexels, int(4u * i + 2u)),
+            texelFetch(materialTexels, int(4u * i + 3u)));
     return materialArray[i];
 }
 GpuLight lightAt(uint i) {
+    if (TEXEL_BUFFERS)
+        return GpuLight(texelFetch(lightTexels, int(2u * i)),
+                        texelFetch(lightTexels, int(2u * i + 1u)));
     return lightArray[i];
 }
 GpuMeshGrid meshGridAt(uint i) {
+    if (TEXEL_BUFFERS)
+        return GpuMeshGrid(uintBitsToFloat(texelFetch(meshGridTexels, int(4u * i))),
+                           uintBitsToFloat(texelFetch(meshGridTexels, int(4u * i + 1u))),
+                           uintBitsToFloat(texelFetch(meshGridTexels, int(4u * i + 2u))),
+                           texelFetch(meshGridTexels, int(4u * i + 3u)));
     return meshGridArray[i];
 }
 GpuTexture textureAt(uint i) {
+    if (TEXEL_BUFFERS) // not a ?: (glslang stores a block's struct into a local of another type)
+        return GpuTexture(texelFetch(textureInfoTexels, int(i)));
     return textureArray[i];
 }

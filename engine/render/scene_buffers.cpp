@@ -38,11 +38,12 @@ public:
         return array;
     }
 
-    vk::Buffer upload(const void *data, uint64_t bytes, bool texelView) {
+    vk::Buffer upload(const void *data, uint64_t bytes, bool texelView,
+                      VkBufferUsageFlags kind = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
         // Vulkan has no empty buffers; unused arrays get one 16-byte element nobody reads.
         VkDeviceSize size = bytes == 0 ? 16 : bytes;
         vk::Buffer target(context_, size,
-                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                          kind | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                               (texelView ? VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : 0),
                           false);
         vk::Buffer staging(context_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
@@ -99,20 +100,20 @@ using B = SceneBuffers;
 const ArrayBinding kArrays[] = {
     {&B::spheres, bytesOf<&P::spheres>, "sphere", kBindingSpheres, kBindingSphereTexels,
      kVec4Texels},
-    {&B::planes, bytesOf<&P::planes>, "plane", kBindingPlanes, kNoTexelBinding, kStorageOnly},
+    {&B::planes, bytesOf<&P::planes>, "plane", kBindingPlanes, kBindingPlaneTexels, kVec4Texels},
     {&B::triangles, bytesOf<&P::triangles>, "triangle", kBindingTriangles, kBindingTriangleTexels,
      kVec4Texels},
     {&B::triangleShading, bytesOf<&P::triangleShading>, "triangle shading", kBindingTriangleShading,
      kBindingTriangleShadingTexels, kVec4Texels},
-    {&B::materials, bytesOf<&P::materials>, "material", kBindingMaterials, kNoTexelBinding,
-     kStorageOnly},
-    {&B::lights, bytesOf<&P::lights>, "light", kBindingLights, kNoTexelBinding, kStorageOnly},
+    {&B::materials, bytesOf<&P::materials>, "material", kBindingMaterials, kBindingMaterialTexels,
+     kVec4Texels},
+    {&B::lights, bytesOf<&P::lights>, "light", kBindingLights, kBindingLightTexels, kVec4Texels},
     {&B::cellStart, bytesOf<&P::cellStart>, "grid cell offset", kBindingCellStart,
      kBindingCellStartTexels, kUintTexels},
     {&B::cellPrimitives, bytesOf<&P::cellPrimitives>, "grid cell primitive", kBindingCellPrimitives,
      kBindingCellPrimitiveTexels, kUintTexels},
-    {&B::textures, bytesOf<&P::textures>, "texture", kBindingTextures, kNoTexelBinding,
-     kStorageOnly},
+    {&B::textures, bytesOf<&P::textures>, "texture", kBindingTextures, kBindingTextureTexels,
+     kUvec4Texels},
     {&B::texels, bytesOf<&P::texels>, "texture texel", kBindingTexels, kBindingImageTexels,
      kVec4Texels},
     {&B::gridEntries, bytesOf<&P::gridEntries>, "grid voxel map", kBindingGridEntries,
@@ -121,8 +122,8 @@ const ArrayBinding kArrays[] = {
      kBindingCellBoxTexels, kUvec4Texels},
     {&B::instances, bytesOf<&P::instances>, "instance", kBindingInstances, kBindingInstanceTexels,
      kVec4Texels},
-    {&B::meshGrids, bytesOf<&P::meshGrids>, "mesh grid", kBindingMeshGrids, kNoTexelBinding,
-     kStorageOnly},
+    {&B::meshGrids, bytesOf<&P::meshGrids>, "mesh grid", kBindingMeshGrids, kBindingMeshGridTexels,
+     kUvec4Texels},
 };
 
 } // namespace
@@ -131,7 +132,8 @@ SceneBuffers uploadScene(const vk::Context &context, vk::CommandRunner &runner,
                          const PackedScene &packed, const ArrayLimits &limits) {
     Uploader up(context, runner, limits);
     SceneBuffers b;
-    b.header = up.upload(&packed.header, sizeof(packed.header), false);
+    b.header =
+        up.upload(&packed.header, sizeof(packed.header), false, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     for (const ArrayBinding &a : kArrays)
         b.*a.array = up.array(a.data(packed), a.what, a.texels);
     return b;
@@ -159,6 +161,7 @@ std::vector<VkDescriptorType> traceDescriptorTypes() {
     std::vector<VkDescriptorType> types(kTraceBindingCount, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     types[kBindingAccumImage] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     types[kBindingAovImage] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+    types[kBindingHeader] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     for (const ArrayBinding &a : kArrays)
         if (a.texelBinding != kNoTexelBinding)
             types[a.texelBinding] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;

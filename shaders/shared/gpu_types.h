@@ -34,11 +34,14 @@ struct GpuSceneHeader {
     uvec4 voxels;     // adaptive grid: xyz voxels per axis, w: voxels per top cell (log2)
     vec4 environment; // x: texture index (-1: none), y: intensity, z: rotation about +y (rad)
 };
-PRISM_INLINE uint headerPlaneCount(PRISM_IN(GpuSceneHeader) h) {
-    return h.counts.y;
+// The counts' accessors take the vector, not the header: the shader's header is a uniform
+// block, and glslang passes a block's struct to a function through an OpStore of mismatched
+// types (invalid SPIR-V before 1.4's OpCopyLogical).
+PRISM_INLINE uint headerPlaneCount(PRISM_IN(uvec4) counts) {
+    return counts.y;
 }
-PRISM_INLINE uint headerLightCount(PRISM_IN(GpuSceneHeader) h) {
-    return h.counts.w;
+PRISM_INLINE uint headerLightCount(PRISM_IN(uvec4) counts) {
+    return counts.w;
 }
 
 // An adaptive-grid cell's box in voxels: 16 bits a coordinate (accel/grid.h, packCellBox).

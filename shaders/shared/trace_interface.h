@@ -43,7 +43,14 @@ PRISM_CONST(uint, kBindingWalkLog, 25u); // uvec4 per walk result, frameWalkLogS
 PRISM_CONST(uint, kBindingInstances, 26u);
 PRISM_CONST(uint, kBindingMeshGrids, 27u);
 PRISM_CONST(uint, kBindingInstanceTexels, 28u); // rgba32f, 7 per GpuInstance
-PRISM_CONST(uint, kTraceBindingCount, 29u);
+// Texel views of the small arrays too: lavapipe reads a storage buffer lane by lane (a loop of
+// 8, a bounds check each), a texel buffer with one gather (docs/benchmarks.md).
+PRISM_CONST(uint, kBindingPlaneTexels, 29u);    // rgba32f, 2 per GpuPlane
+PRISM_CONST(uint, kBindingMaterialTexels, 30u); // rgba32f, 4 per GpuMaterial
+PRISM_CONST(uint, kBindingLightTexels, 31u);    // rgba32f, 2 per GpuLight
+PRISM_CONST(uint, kBindingMeshGridTexels, 32u); // rgba32ui, 4 per GpuMeshGrid (floats as bits)
+PRISM_CONST(uint, kBindingTextureTexels, 33u);  // rgba32ui, 1 per GpuTexture
+PRISM_CONST(uint, kTraceBindingCount, 34u);
 
 // Specialization constants: features a scene does not use are compiled out.
 PRISM_CONST(uint, kSpecKinds, 0u); // bit k: the scene has primitives of kind k
