@@ -41,36 +41,48 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
       walkLog_(context, 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false), timestamps_(context) {
     if (features_.profile > 0 && !context.shaderClockEnabled())
         throw Error("profiling needs a Vulkan context created with the shader clock");
+    bool hasFinite = (features_.kinds & ~(1u << gpu::kKindPlane)) != 0;
+    extent_ = sceneExtent(scene, grid, hasFinite);
     createImages(width, height);
     createPipeline();
+    if (options.cullMissTiles)
+        missPipeline_ = createTracerPipeline(features_.backgroundOnly());
 }
 
 void RayTracer::createPipeline() {
+    pipeline_ = createTracerPipeline(features_);
+}
+
+std::unique_ptr<vk::ComputePipeline>
+RayTracer::createTracerPipeline(const TracerFeatures &features) {
     vk::ComputePipelineDesc desc;
     desc.spirv =
-        features_.profile > 0
+        features.profile > 0
             ? std::span<const uint32_t>(kTraceProfileCompSpv, sizeof(kTraceProfileCompSpv) / 4)
             : std::span<const uint32_t>(kTraceCompSpv, sizeof(kTraceCompSpv) / 4);
     desc.bindings = traceDescriptorTypes();
-    desc.specialization = features_.specialization();
+    desc.specialization = features.specialization();
     desc.pushConstantBytes = sizeof(gpu::GpuFrameParams);
-    pipeline_ = std::make_unique<vk::ComputePipeline>(context_, desc);
-    bindImages();
-    bindScene(*pipeline_, scene_, limits_);
-    pipeline_->bindBuffer(gpu::kBindingStats, stats_.handle());
-    pipeline_->bindBuffer(gpu::kBindingResumeRecords, resumeRecords_.handle());
-    pipeline_->bindBuffer(gpu::kBindingWalkLog, walkLog_.handle());
+    auto pipeline = std::make_unique<vk::ComputePipeline>(context_, desc);
+    bindImages(*pipeline);
+    bindScene(*pipeline, scene_, limits_);
+    pipeline->bindBuffer(gpu::kBindingStats, stats_.handle());
+    pipeline->bindBuffer(gpu::kBindingResumeRecords, resumeRecords_.handle());
+    pipeline->bindBuffer(gpu::kBindingWalkLog, walkLog_.handle());
+    return pipeline;
 }
 
-void RayTracer::bindImages() {
-    pipeline_->bindStorageImage(gpu::kBindingAccumImage, accum_.view());
-    pipeline_->bindStorageImage(gpu::kBindingAovImage, aov_.view());
+void RayTracer::bindImages(vk::ComputePipeline &pipeline) {
+    pipeline.bindStorageImage(gpu::kBindingAccumImage, accum_.view());
+    pipeline.bindStorageImage(gpu::kBindingAovImage, aov_.view());
 }
 
 void RayTracer::resize(uint32_t width, uint32_t height) {
     vkDeviceWaitIdle(context_.device()); // no submission may still use the old images
     createImages(width, height);
-    bindImages();
+    bindImages(*pipeline_);
+    if (missPipeline_)
+        bindImages(*missPipeline_);
     if (resumePlan_.tileWidth != 0) // tiles and logs are planned for the image size
         startResuming();
 }
@@ -136,11 +148,33 @@ void RayTracer::recordSamples(VkCommandBuffer commands, const Camera &camera, ui
                               uint32_t count, uint32_t samplesPerPixel) {
     gpu::GpuFrameParams params =
         makeFrameParams(camera, width_, height_, samplesPerPixel, features_.maxDepth);
-    pipeline_->bind(commands);
     for (uint32_t s = firstSample; s < firstSample + count; ++s) {
         params.image.z = s;
-        recordDispatch(commands, params, (width_ + 7) / 8, (height_ + 7) / 8);
+        recordSample(commands, params);
     }
+}
+
+void RayTracer::recordSample(VkCommandBuffer commands, gpu::GpuFrameParams params) {
+    uint32_t tilesX = (width_ + kTileSize - 1) / kTileSize;
+    uint32_t tilesY = (height_ + kTileSize - 1) / kTileSize;
+    TileRect all{0, 0, tilesX, tilesY};
+    TileRect traced = missPipeline_ ? tilesThatMayHit(params, extent_) : all;
+    recordTiles(commands, *pipeline_, params, traced);
+    if (missPipeline_)
+        for (const TileRect &rest : tilesAround(traced, tilesX, tilesY))
+            recordTiles(commands, *missPipeline_, params, rest);
+    recordAccumulationBarrier(commands); // the tiles of one sample do not overlap
+}
+
+void RayTracer::recordTiles(VkCommandBuffer commands, const vk::ComputePipeline &pipeline,
+                            gpu::GpuFrameParams params, const TileRect &tiles) {
+    if (tiles.empty())
+        return;
+    params.control.z = (tiles.x0 * kTileSize) | ((tiles.y0 * kTileSize) << 16u);
+    pipeline.bind(commands);
+    vkCmdPushConstants(commands, pipeline.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(params),
+                       &params);
+    vkCmdDispatch(commands, tiles.width(), tiles.height(), 1);
 }
 
 void RayTracer::recordDispatch(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
@@ -148,6 +182,10 @@ void RayTracer::recordDispatch(VkCommandBuffer commands, const gpu::GpuFramePara
     vkCmdPushConstants(commands, pipeline_->layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                        sizeof(params), &params);
     vkCmdDispatch(commands, groupsX, groupsY, 1);
+    recordAccumulationBarrier(commands);
+}
+
+void RayTracer::recordAccumulationBarrier(VkCommandBuffer commands) {
     // Each sample reads the sum the previous one wrote.
     vk::imageBarrier(commands, accum_.handle(), VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
@@ -158,8 +196,13 @@ void RayTracer::recordDispatch(VkCommandBuffer commands, const gpu::GpuFramePara
 void RayTracer::compile(const Camera &camera) {
     gpu::GpuFrameParams params = makeFrameParams(camera, width_, height_, 1, features_.maxDepth);
     runner_.run([&](VkCommandBuffer commands) {
-        pipeline_->bind(commands);
-        recordDispatch(commands, params, 1, 1);
+        TileRect first{0, 0, 1, 1};
+        recordTiles(commands, *pipeline_, params, first);
+        recordAccumulationBarrier(commands);
+        if (missPipeline_) { // lavapipe compiles each variant at its first dispatch
+            recordTiles(commands, *missPipeline_, params, first);
+            recordAccumulationBarrier(commands);
+        }
     });
 }
 

@@ -10,6 +10,7 @@
 #include "core/ray_counts.h"
 #include "render/resume_plan.h"
 #include "render/scene_buffers.h"
+#include "render/traced_tiles.h"
 #include "render/tracer_features.h"
 #include "shared/profile_phases.h"
 #include "vk/buffer.h"
@@ -103,10 +104,17 @@ private:
     // next dispatch read the accumulation it wrote.
     void recordDispatch(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
                         uint32_t groupsX, uint32_t groupsY);
+    // One sample over the whole image: the full tracer on the tiles whose rays may hit
+    // something, the background variant on the rest (render/traced_tiles.h).
+    void recordSample(VkCommandBuffer commands, gpu::GpuFrameParams params);
+    void recordAccumulationBarrier(VkCommandBuffer commands);
+    void recordTiles(VkCommandBuffer commands, const vk::ComputePipeline &pipeline,
+                     gpu::GpuFrameParams params, const TileRect &tiles);
     void createImages(uint32_t width, uint32_t height);
-    void bindImages();
+    void bindImages(vk::ComputePipeline &pipeline);
     // The pipeline for features_, with every binding written.
     void createPipeline();
+    std::unique_ptr<vk::ComputePipeline> createTracerPipeline(const TracerFeatures &features);
     // Resumable tracing: each sample of each tile dispatched until all its pixels are done.
     void startResuming();
     FrameResult renderResumable(const Camera &camera, uint32_t samplesPerPixel,
@@ -130,6 +138,10 @@ private:
     vk::Image aov_;
     vk::TimestampQueries timestamps_;
     std::unique_ptr<vk::ComputePipeline> pipeline_;
+    // The tracer compiled without geometry, for tiles that see only the background; null when
+    // TracerOptions::cullMissTiles is off.
+    std::unique_ptr<vk::ComputePipeline> missPipeline_;
+    SceneExtent extent_;
 };
 
 } // namespace prism

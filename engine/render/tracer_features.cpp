@@ -64,6 +64,14 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     return f;
 }
 
+TracerFeatures TracerFeatures::backgroundOnly() const {
+    TracerFeatures f = *this;
+    f.kinds = 0;
+    f.reflection = f.transmission = f.textures = f.areaLights = f.vertexNormals = false;
+    f.surfaceMaps = f.shadows = f.adaptiveGrid = false;
+    return f;
+}
+
 std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
     uint32_t stackSize = std::max(1u, 2u * maxDepth - 1u); // see pushRay in trace.comp
     return {{gpu::kSpecKinds, kinds},

@@ -39,6 +39,9 @@ struct TracerOptions {
     // the common Moller-Trumbore triangle test instead of the watertight one.
     float fixedRayOffset = 0.0f;
     bool mollerTrumbore = false;
+    // Tiles whose camera rays provably miss everything get a variant with no geometry
+    // (render/traced_tiles.h); off only to measure what that saves (prism-bench no-cull).
+    bool cullMissTiles = true;
 };
 
 struct TracerFeatures {
@@ -62,6 +65,9 @@ struct TracerFeatures {
     bool mollerTrumbore = false;   // TracerOptions::mollerTrumbore
 
     bool has(uint32_t kind) const { return (kinds >> kind) & 1u; }
+    // The same tracer for rays that hit nothing: no primitive kind and nothing that only a hit
+    // uses; misses still see the environment, and AOVs are still written.
+    TracerFeatures backgroundOnly() const;
     std::vector<vk::SpecializationConstant> specialization() const;
 };
 

@@ -2,6 +2,8 @@
 // Rendering one scene on both backends, for comparisons.
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "accel/grid.h"
 #include "reference/reference_renderer.h"
 #include "render/ray_tracer.h"
@@ -27,6 +29,16 @@ inline GpuRender renderGpu(vk::Context &context, Scene scene, uint32_t width, ui
     out.frame = tracer.renderFrame(scene.camera, spp);
     out.image = tracer.readback(spp);
     return out;
+}
+
+// Two renders of one frame that must agree bit for bit: image, AOVs and ray counts.
+inline void expectSameFrame(const GpuRender &a, const GpuRender &b) {
+    EXPECT_EQ(a.image.rgba, b.image.rgba);
+    EXPECT_EQ(a.image.depth, b.image.depth);
+    EXPECT_EQ(a.image.normal, b.image.normal);
+    EXPECT_EQ(a.frame.rays.primary, b.frame.rays.primary);
+    EXPECT_EQ(a.frame.rays.shadow, b.frame.rays.shadow);
+    EXPECT_EQ(a.frame.rays.secondary, b.frame.rays.secondary);
 }
 
 // The same centred scene as renderGpu gives the GPU.

@@ -16,15 +16,6 @@ namespace {
 
 class Resumable : public GpuTest {};
 
-void expectSameFrame(const GpuRender &resumed, const GpuRender &plain) {
-    EXPECT_EQ(resumed.image.rgba, plain.image.rgba);
-    EXPECT_EQ(resumed.image.depth, plain.image.depth);
-    EXPECT_EQ(resumed.image.normal, plain.image.normal);
-    EXPECT_EQ(resumed.frame.rays.primary, plain.frame.rays.primary);
-    EXPECT_EQ(resumed.frame.rays.shadow, plain.frame.rays.shadow);
-    EXPECT_EQ(resumed.frame.rays.secondary, plain.frame.rays.secondary);
-}
-
 // Small budgets interrupt walks in mid-cell, between walks, in shadow walks and in reflected
 // and refracted rays: a cloud of 300 spheres makes walks long (on the regular grid one cell
 // holds everything: 2,000 iterations a dispatch; the adaptive grid's walks are short: 300, at

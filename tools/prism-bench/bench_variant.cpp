@@ -43,6 +43,8 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.tracer.transmission = false;
         } else if (token == "no-shadows") {
             v.tracer.shadows = false;
+        } else if (token == "no-cull") {
+            v.tracer.cullMissTiles = false;
         } else if (token == "resumable") {
             v.tracer.resumable = true;
         } else if (token == "texel" || token == "storage") {
@@ -58,8 +60,8 @@ BenchVariant parseBenchVariant(const std::string &text) {
         } else {
             throw Error("variant " + text + ": unknown part '" + token +
                         "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
-                        "no-reflection, no-refraction, no-shadows, texel, storage, resumable, "
-                        "offset=relative|E, triangle=watertight|mt, flat; join with +)");
+                        "no-reflection, no-refraction, no-shadows, no-cull, texel, storage, "
+                        "resumable, offset=relative|E, triangle=watertight|mt, flat; join with +)");
         }
     }
     return v;

@@ -131,8 +131,9 @@ int main(int argc, char **argv) {
            "--variants", variantList,
            "Comma-separated variants: auto, regular, off, adaptive, two-level, grid=N|NxNyNz, "
            "density=L, "
-           "no-reflection, no-refraction, no-shadows, texel or storage (how the hot arrays are "
-           "read), resumable (the loop-budget tracer from the first frame); join parts with +. "
+           "no-reflection, no-refraction, no-shadows, no-cull (the full tracer on every tile, "
+           "also those whose camera rays miss everything), texel or storage (how the hot arrays "
+           "are read), resumable (the loop-budget tracer from the first frame); join parts with +. "
            "For the studies (docs/studies) only, methods Prism replaced: offset=E (the "
            "original's fixed ray offset of E scene units; offset=relative is Prism's) and "
            "triangle=mt (Moller-Trumbore; triangle=watertight is Prism's). flat: the scene's "
