@@ -40,15 +40,13 @@ void cameraRay(vec2 pixelPosition, out vec3 origin, out vec3 dir) {
     }
 }
 
-vec2 samplePosition(uvec2 pixel, uint pixelIndex, uint sampleIndex) {
-    uint spp = frameSamplesPerPixel(frame);
-    if (spp == 1u)
+vec2 samplePosition(uvec2 pixel, uint pixelIndex) {
+    if (frameSamplesPerPixel(frame) == 1u)
         return vec2(pixel) + 0.5;
-    uint columns = strataColumns(spp), rows = strataRows(spp);
-    vec2 stratum = vec2(sampleIndex % columns, sampleIndex / columns);
-    vec2 jitter = vec2(sample01(pixelIndex, sampleIndex, PRISM_DIM_PIXEL_X),
-                       sample01(pixelIndex, sampleIndex, PRISM_DIM_PIXEL_Y));
-    return vec2(pixel) + (stratum + jitter) / vec2(columns, rows);
+    // The stratum and the hash seeds come with the frame (the same for every pixel).
+    vec2 jitter = vec2(bitsTo01(pcgHash(pixelIndex ^ frame.jitterSeeds.x)),
+                       bitsTo01(pcgHash(pixelIndex ^ frame.jitterSeeds.y)));
+    return vec2(pixel) + (frame.strata.xy + jitter) / frame.strata.zw;
 }
 
 // Ambient + Blinn-Phong from every light whose shadow ray is clear. The normals face the
@@ -239,7 +237,7 @@ void main() {
     if (inside) {
         vec3 origin, dir;
         uint64_t cameraStart = profileClock();
-        cameraRay(samplePosition(pixel, pixelIndex, sampleIndex), origin, dir);
+        cameraRay(samplePosition(pixel, pixelIndex), origin, dir);
         profileAdd(kPhaseCamera, cameraStart);
         radiance = traceSample(origin, dir, pixelIndex, sampleIndex);
         if (WRITE_AOV && sampleIndex == 0u) {

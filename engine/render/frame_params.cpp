@@ -1,6 +1,7 @@
 #include "render/frame_params.h"
 
 #include "scene/camera_frame.h"
+#include "shared/sampling.h"
 
 namespace prism {
 
@@ -14,7 +15,18 @@ gpu::GpuFrameParams makeFrameParams(const Camera &camera, uint32_t width, uint32
     p.dv = glm::vec4(glm::vec3(f.dv), 0.0f);
     p.image = glm::uvec4(width, height, 0u, samplesPerPixel);
     p.control = glm::uvec4(maxDepth, gpu::kLoopProbeRuns, 0u, 0u);
+    setFrameSample(p, 0);
     return p;
+}
+
+void setFrameSample(gpu::GpuFrameParams &p, uint32_t sample) {
+    uint32_t spp = p.image.w;
+    uint32_t columns = gpu::strataColumns(spp), rows = gpu::strataRows(spp);
+    p.image.z = sample;
+    p.strata =
+        glm::vec4(float(sample % columns), float(sample / columns), float(columns), float(rows));
+    p.jitterSeeds = glm::uvec4(gpu::sampleSeed(sample, PRISM_DIM_PIXEL_X),
+                               gpu::sampleSeed(sample, PRISM_DIM_PIXEL_Y), 0u, 0u);
 }
 
 } // namespace prism

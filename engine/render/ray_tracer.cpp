@@ -149,7 +149,7 @@ void RayTracer::recordSamples(VkCommandBuffer commands, const Camera &camera, ui
     gpu::GpuFrameParams params =
         makeFrameParams(camera, width_, height_, samplesPerPixel, features_.maxDepth);
     for (uint32_t s = firstSample; s < firstSample + count; ++s) {
-        params.image.z = s;
+        setFrameSample(params, s);
         recordSample(commands, params);
     }
 }

@@ -49,7 +49,7 @@ void RayTracer::traceSampleResumably(const Camera &camera, uint32_t sample,
     gpu::GpuFrameParams params =
         makeFrameParams(camera, width_, height_, samplesPerPixel, features_.maxDepth);
     params.control.w = plan.walkLogSize;
-    params.image.z = sample;
+    setFrameSample(params, sample);
     const auto *counters = static_cast<const gpu::GpuStats *>(stats_.mapped());
     for (uint32_t ty = 0; ty < tilesY; ++ty) {
         for (uint32_t tx = 0; tx < tilesX; ++tx) {

@@ -241,6 +241,11 @@ struct GpuFrameParams {
     vec4 dv;       // true up scaled by h (perspective) or H/2 (ortho)
     uvec4 image;   // x width, y height, z this dispatch's sample index, w samples per pixel
     uvec4 control; // x: max depth, y: kLoopProbeRuns, z: tile origin x | y << 16, w: walk log size
+    // The pixel jitter's parts that are the same for every pixel of a dispatch, computed once by
+    // the host (render/frame_params.h): in the shader they were integer divisions and loops,
+    // which lavapipe runs lane by lane for every pixel.
+    vec4 strata;       // xy: this sample's stratum (column, row); zw: columns, rows
+    uvec4 jitterSeeds; // x, y: sampleSeed(sample, PRISM_DIM_PIXEL_X / _Y) (shared/sampling.h)
 };
 PRISM_INLINE bool isParallelCamera(PRISM_IN(GpuFrameParams) f) {
     return f.eye.w != 0.0f;
@@ -314,7 +319,8 @@ static_assert(offsetof(GpuStats, unfinishedPixels) == 32);
 static_assert(offsetof(GpuStats, phaseNs) == 48);
 static_assert(sizeof(GpuResumeRecord) == 64);
 static_assert(offsetof(GpuStats, loopCutPixels) == 24);
-static_assert(sizeof(GpuFrameParams) == 96);
+static_assert(sizeof(GpuFrameParams) == 128);
+static_assert(offsetof(GpuFrameParams, jitterSeeds) == 112);
 static_assert(offsetof(GpuFrameParams, image) == 64);
 static_assert(sizeof(GpuFrameParams) <= 128, "push constants are limited to 128 bytes");
 } // namespace prism::gpu

@@ -20,12 +20,20 @@ PRISM_INLINE uint pcgHash(uint v) {
 #define PRISM_DIM_PIXEL_Y 1u
 #define PRISM_DIM_LIGHT_BASE 2u
 
-// A uniform number in [0, 1) for (pixel, sample, dimension); 24 bits, exact in float.
+// A uniform number in [0, 1) for (pixel, sample, dimension); 24 bits, exact in float. The seed
+// is the part that does not depend on the pixel: the host computes it once per dispatch for the
+// pixel jitter (GpuFrameParams::jitterSeeds).
+PRISM_INLINE uint sampleSeed(uint sampleIndex, uint dimension) {
+    return pcgHash(sampleIndex ^ pcgHash(dimension));
+}
 PRISM_INLINE uint sampleBits(uint pixelIndex, uint sampleIndex, uint dimension) {
-    return pcgHash(pixelIndex ^ pcgHash(sampleIndex ^ pcgHash(dimension)));
+    return pcgHash(pixelIndex ^ sampleSeed(sampleIndex, dimension));
+}
+PRISM_INLINE float bitsTo01(uint bits) {
+    return float(bits >> 8u) * (1.0f / 16777216.0f);
 }
 PRISM_INLINE float sample01(uint pixelIndex, uint sampleIndex, uint dimension) {
-    return float(sampleBits(pixelIndex, sampleIndex, dimension) >> 8u) * (1.0f / 16777216.0f);
+    return bitsTo01(sampleBits(pixelIndex, sampleIndex, dimension));
 }
 
 // Strata for N samples per pixel: columns = floor(sqrt(N)), rows = ceil(N / columns).
