@@ -228,7 +228,10 @@ bool stepBoxWalk(inout BoxWalk w, vec3 origin, vec3 dir) {
     next = mix(min(next, w.voxel), max(next, w.voxel), greaterThan(dir, vec3(0.0)));
     next[w.axis] = dir[w.axis] > 0.0 ? w.boxMax[w.axis] : w.boxMin[w.axis] - 1;
     w.voxel = next;
-    return next[w.axis] >= 0 && next[w.axis] < int(header.voxels[w.axis]);
+    // The voxel counts copied out first: a uniform block indexed by a lane's own axis is a
+    // gather on lavapipe, a local vector three selects.
+    ivec3 voxels = ivec3(header.voxels.xyz);
+    return next[w.axis] >= 0 && next[w.axis] < voxels[w.axis];
 }
 
 // One walk for both kinds of query (trace_ray.glsl), planes first, then the grid.
