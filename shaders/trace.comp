@@ -44,8 +44,8 @@ vec2 samplePosition(uvec2 pixel, uint pixelIndex) {
     if (frameSamplesPerPixel(frame) == 1u)
         return vec2(pixel) + 0.5;
     // The stratum and the hash seeds come with the frame (the same for every pixel).
-    vec2 jitter = vec2(bitsTo01(pcgHash(pixelIndex ^ frame.jitterSeeds.x)),
-                       bitsTo01(pcgHash(pixelIndex ^ frame.jitterSeeds.y)));
+    vec2 jitter = vec2(bitsTo01(pcgHash(pixelIndex ^ frame.seedsAndLoops.x)),
+                       bitsTo01(pcgHash(pixelIndex ^ frame.seedsAndLoops.y)));
     return vec2(pixel) + (frame.strata.xy + jitter) / frame.strata.zw;
 }
 
@@ -55,7 +55,7 @@ vec2 samplePosition(uvec2 pixel, uint pixelIndex) {
 vec3 directLight(Surface s, vec3 facingGeometric, vec3 smoothN, vec3 n, vec3 view, vec3 color,
                  GpuMaterial m, uint pixelIndex, uint sampleIndex, uint depth) {
     vec3 result = materialAmbient(m) * color * header.ambient.rgb;
-    uint lights = headerLightCount(header.counts);
+    uint lights = frameLightCount(frame);
     for (uint l = 0u; l < lights; ++l) {
         // resume.glsl: the light's loop pass, and the strata loops of an area light's sample
         // (sampling.h: from sqrt's estimate, each runs at most twice, three times a sample)

@@ -9,8 +9,8 @@
 // earlier dispatch did, and stops, setting resume.interrupted, where the lane's budget runs out.
 bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resume) {
     if (HAS_PLANES) {
-        chargeBudget(headerPlaneCount(header.counts));
-        for (uint i = 0u; i < headerPlaneCount(header.counts); ++i) {
+        chargeBudget(framePlaneCount(frame));
+        for (uint i = 0u; i < framePlaneCount(frame); ++i) {
             float t;
             if (intersectPlane(origin, dir, planeEquation(i), hit.t, t)) {
                 hit.t = t;

@@ -25,8 +25,8 @@ void setFrameSample(gpu::GpuFrameParams &p, uint32_t sample) {
     p.image.z = sample;
     p.strata =
         glm::vec4(float(sample % columns), float(sample / columns), float(columns), float(rows));
-    p.jitterSeeds = glm::uvec4(gpu::sampleSeed(sample, PRISM_DIM_PIXEL_X),
-                               gpu::sampleSeed(sample, PRISM_DIM_PIXEL_Y), 0u, 0u);
+    p.seedsAndLoops.x = gpu::sampleSeed(sample, PRISM_DIM_PIXEL_X);
+    p.seedsAndLoops.y = gpu::sampleSeed(sample, PRISM_DIM_PIXEL_Y);
 }
 
 } // namespace prism

@@ -36,7 +36,8 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT, // snapshots for the viewer
              true),
-      lightCount_(uint32_t(scene.lights.size())), resumeMemoryBytes_(options.resumeMemoryBytes),
+      planeCount_(uint32_t(scene.planes.size())), lightCount_(uint32_t(scene.lights.size())),
+      resumeMemoryBytes_(options.resumeMemoryBytes),
       resumeRecords_(context, 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false),
       walkLog_(context, 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false), timestamps_(context) {
     if (features_.profile > 0 && !context.shaderClockEnabled())
@@ -146,12 +147,19 @@ void RayTracer::createImages(uint32_t width, uint32_t height) {
 
 void RayTracer::recordSamples(VkCommandBuffer commands, const Camera &camera, uint32_t firstSample,
                               uint32_t count, uint32_t samplesPerPixel) {
-    gpu::GpuFrameParams params =
-        makeFrameParams(camera, width_, height_, samplesPerPixel, features_.maxDepth);
+    gpu::GpuFrameParams params = frameParams(camera, samplesPerPixel);
     for (uint32_t s = firstSample; s < firstSample + count; ++s) {
         setFrameSample(params, s);
         recordSample(commands, params);
     }
+}
+
+gpu::GpuFrameParams RayTracer::frameParams(const Camera &camera, uint32_t samplesPerPixel) const {
+    gpu::GpuFrameParams params =
+        makeFrameParams(camera, width_, height_, samplesPerPixel, features_.maxDepth);
+    params.seedsAndLoops.z = planeCount_;
+    params.seedsAndLoops.w = lightCount_;
+    return params;
 }
 
 void RayTracer::recordSample(VkCommandBuffer commands, gpu::GpuFrameParams params) {
@@ -194,7 +202,7 @@ void RayTracer::recordAccumulationBarrier(VkCommandBuffer commands) {
 }
 
 void RayTracer::compile(const Camera &camera) {
-    gpu::GpuFrameParams params = makeFrameParams(camera, width_, height_, 1, features_.maxDepth);
+    gpu::GpuFrameParams params = frameParams(camera, 1);
     runner_.run([&](VkCommandBuffer commands) {
         TileRect first{0, 0, 1, 1};
         recordTiles(commands, *pipeline_, params, first);

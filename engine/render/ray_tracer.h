@@ -107,6 +107,8 @@ private:
     // One sample over the whole image: the full tracer on the tiles whose rays may hit
     // something, the background variant on the rest (render/traced_tiles.h).
     void recordSample(VkCommandBuffer commands, gpu::GpuFrameParams params);
+    // makeFrameParams with the scene's plane and light counts (the shader's loop bounds).
+    gpu::GpuFrameParams frameParams(const Camera &camera, uint32_t samplesPerPixel) const;
     void recordAccumulationBarrier(VkCommandBuffer commands);
     void recordTiles(VkCommandBuffer commands, const vk::ComputePipeline &pipeline,
                      gpu::GpuFrameParams params, const TileRect &tiles);
@@ -129,7 +131,7 @@ private:
     vk::CommandRunner runner_;
     SceneBuffers scene_;
     vk::Buffer stats_;
-    uint32_t lightCount_ = 0;
+    uint32_t planeCount_ = 0, lightCount_ = 0;
     uint64_t resumeMemoryBytes_ = 0;
     ResumePlan resumePlan_;
     vk::Buffer resumeRecords_; // resumable tracing; 32-byte stand-ins otherwise

@@ -244,9 +244,20 @@ struct GpuFrameParams {
     // The pixel jitter's parts that are the same for every pixel of a dispatch, computed once by
     // the host (render/frame_params.h): in the shader they were integer divisions and loops,
     // which lavapipe runs lane by lane for every pixel.
-    vec4 strata;       // xy: this sample's stratum (column, row); zw: columns, rows
-    uvec4 jitterSeeds; // x, y: sampleSeed(sample, PRISM_DIM_PIXEL_X / _Y) (shared/sampling.h)
+    vec4 strata; // xy: this sample's stratum (column, row); zw: columns, rows
+    // x, y: sampleSeed(sample, PRISM_DIM_PIXEL_X / _Y) (shared/sampling.h). z, w: the plane and
+    // light loops' bounds (the header has them too). They come here, not from the header's
+    // uniform block, because lavapipe recompiles a shader whenever the value of a uniform that
+    // bounds a loop may have changed: with the counts read from the header it compiled the
+    // tracer anew at every frame (10-18% of a frame on scenes with planes, and memory).
+    uvec4 seedsAndLoops;
 };
+PRISM_INLINE uint framePlaneCount(PRISM_IN(GpuFrameParams) f) {
+    return f.seedsAndLoops.z;
+}
+PRISM_INLINE uint frameLightCount(PRISM_IN(GpuFrameParams) f) {
+    return f.seedsAndLoops.w;
+}
 PRISM_INLINE bool isParallelCamera(PRISM_IN(GpuFrameParams) f) {
     return f.eye.w != 0.0f;
 }
@@ -320,7 +331,7 @@ static_assert(offsetof(GpuStats, phaseNs) == 48);
 static_assert(sizeof(GpuResumeRecord) == 64);
 static_assert(offsetof(GpuStats, loopCutPixels) == 24);
 static_assert(sizeof(GpuFrameParams) == 128);
-static_assert(offsetof(GpuFrameParams, jitterSeeds) == 112);
+static_assert(offsetof(GpuFrameParams, seedsAndLoops) == 112);
 static_assert(offsetof(GpuFrameParams, image) == 64);
 static_assert(sizeof(GpuFrameParams) <= 128, "push constants are limited to 128 bytes");
 } // namespace prism::gpu

@@ -22,7 +22,7 @@ PRISM_INLINE uint pcgHash(uint v) {
 
 // A uniform number in [0, 1) for (pixel, sample, dimension); 24 bits, exact in float. The seed
 // is the part that does not depend on the pixel: the host computes it once per dispatch for the
-// pixel jitter (GpuFrameParams::jitterSeeds).
+// pixel jitter (GpuFrameParams::seedsAndLoops).
 PRISM_INLINE uint sampleSeed(uint sampleIndex, uint dimension) {
     return pcgHash(sampleIndex ^ pcgHash(dimension));
 }

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fstream>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "core/error.h"
@@ -271,6 +274,33 @@ TEST_F(Stability, CompileDispatchLeavesNoTrace) {
     EXPECT_EQ(compiled.depth, plain.depth);
     EXPECT_EQ(compiled.normal, plain.normal);
     EXPECT_EQ(compiledRays.total(), plainRays.total());
+}
+
+// Executable mappings of this process: lavapipe puts each shader it compiles into new ones.
+int executableMappings() {
+    std::ifstream maps("/proc/self/maps");
+    int count = 0;
+    for (std::string line; std::getline(maps, line);)
+        count += line.find(" r-xp 00000000 00:00 0") != std::string::npos ? 1 : 0;
+    return count;
+}
+
+// Frames after the first compile nothing. lavapipe recompiles a shader whenever the value of a
+// uniform-block word that bounds a loop may have changed; the plane and light loops once read
+// their counts from the header's uniform block, and every frame compiled the tracer anew.
+TEST_F(Stability, LaterFramesCompileNothing) {
+    if (!std::ifstream("/proc/self/maps"))
+        GTEST_SKIP() << "no /proc/self/maps to count compiled code by";
+    Scene scene = stabilityScene(); // planes, spheres, triangles, a light
+    scene.lights.push_back(Light{{-3.0, 5.0, 2.0}, {0.5f, 0.5f, 0.5f}, 0.0f});
+    centerOnCamera(scene);
+    Grid grid = buildGrid(scene);
+    RayTracer tracer(context(), scene, grid, 64, 48, TracerOptions{});
+    tracer.renderFrame(scene.camera, 1);
+    int before = executableMappings();
+    for (int frame = 0; frame < 4; ++frame)
+        tracer.renderFrame(scene.camera, 2);
+    EXPECT_EQ(executableMappings(), before);
 }
 
 // Texel-buffer and storage-buffer reads of the same arrays must give the very same image.
