@@ -239,6 +239,12 @@ void main() {
         uint64_t cameraStart = profileClock();
         cameraRay(samplePosition(pixel, pixelIndex), origin, dir);
         profileAdd(kPhaseCamera, cameraStart);
+#ifdef PRISM_BACKGROUND_ONLY
+        // Tiles whose camera rays provably miss everything (render/traced_tiles.h): no walk,
+        // no shading, so glslang leaves them out and lavapipe creates this variant in
+        // milliseconds. The AOVs keep their miss values.
+        radiance = missColor(dir);
+#else
         radiance = traceSample(origin, dir, pixelIndex, sampleIndex);
         if (WRITE_AOV && sampleIndex == 0u) {
             cameraRay(vec2(pixel) + 0.5, origin, dir);
@@ -248,6 +254,7 @@ void main() {
                 aov = vec4(dot(ng, dir) > 0.0 ? -ng : ng, hit.t);
             }
         }
+#endif
     }
     uint64_t outputStart = profileClock();
     // Last, after every other loop of the invocation (loop_limit.glsl).

@@ -7,6 +7,7 @@
 #include "core/timer.h"
 #include "render/frame_params.h"
 #include "shaders/trace.comp.spv.h"
+#include "shaders/trace_background.comp.spv.h"
 #include "shaders/trace_profile.comp.spv.h"
 #include "shared/trace_interface.h"
 #include "vk/barriers.h"
@@ -47,20 +48,25 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     createImages(width, height);
     createPipeline();
     if (options.cullMissTiles)
-        missPipeline_ = createTracerPipeline(features_.backgroundOnly());
+        missPipeline_ = createTracerPipeline(features_.backgroundOnly(), true);
 }
 
 void RayTracer::createPipeline() {
-    pipeline_ = createTracerPipeline(features_);
+    pipeline_ = createTracerPipeline(features_, false);
 }
 
-std::unique_ptr<vk::ComputePipeline>
-RayTracer::createTracerPipeline(const TracerFeatures &features) {
+std::unique_ptr<vk::ComputePipeline> RayTracer::createTracerPipeline(const TracerFeatures &features,
+                                                                     bool backgroundOnly) {
     vk::ComputePipelineDesc desc;
-    desc.spirv =
-        features.profile > 0
-            ? std::span<const uint32_t>(kTraceProfileCompSpv, sizeof(kTraceProfileCompSpv) / 4)
-            : std::span<const uint32_t>(kTraceCompSpv, sizeof(kTraceCompSpv) / 4);
+    // The profiling build times background tiles too, with the full module (no kinds).
+    if (features.profile > 0)
+        desc.spirv =
+            std::span<const uint32_t>(kTraceProfileCompSpv, sizeof(kTraceProfileCompSpv) / 4);
+    else if (backgroundOnly)
+        desc.spirv =
+            std::span<const uint32_t>(kTraceBackgroundCompSpv, sizeof(kTraceBackgroundCompSpv) / 4);
+    else
+        desc.spirv = std::span<const uint32_t>(kTraceCompSpv, sizeof(kTraceCompSpv) / 4);
     desc.bindings = traceDescriptorTypes();
     desc.specialization = features.specialization();
     desc.pushConstantBytes = sizeof(gpu::GpuFrameParams);

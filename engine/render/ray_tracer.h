@@ -116,7 +116,9 @@ private:
     void bindImages(vk::ComputePipeline &pipeline);
     // The pipeline for features_, with every binding written.
     void createPipeline();
-    std::unique_ptr<vk::ComputePipeline> createTracerPipeline(const TracerFeatures &features);
+    // `backgroundOnly`: the module compiled with PRISM_BACKGROUND_ONLY (render/traced_tiles.h).
+    std::unique_ptr<vk::ComputePipeline> createTracerPipeline(const TracerFeatures &features,
+                                                              bool backgroundOnly);
     // Resumable tracing: each sample of each tile dispatched until all its pixels are done.
     void startResuming();
     FrameResult renderResumable(const Camera &camera, uint32_t samplesPerPixel,
