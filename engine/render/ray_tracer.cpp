@@ -154,9 +154,11 @@ void RayTracer::createImages(uint32_t width, uint32_t height) {
 void RayTracer::recordSamples(VkCommandBuffer commands, const Camera &camera, uint32_t firstSample,
                               uint32_t count, uint32_t samplesPerPixel) {
     gpu::GpuFrameParams params = frameParams(camera, samplesPerPixel);
+    // The same camera for every sample: which tiles may hit something is found once.
+    TileRect traced = tracedTiles(params);
     for (uint32_t s = firstSample; s < firstSample + count; ++s) {
         setFrameSample(params, s);
-        recordSample(commands, params);
+        recordSample(commands, params, traced);
     }
 }
 
@@ -168,14 +170,17 @@ gpu::GpuFrameParams RayTracer::frameParams(const Camera &camera, uint32_t sample
     return params;
 }
 
-void RayTracer::recordSample(VkCommandBuffer commands, gpu::GpuFrameParams params) {
-    uint32_t tilesX = (width_ + kTileSize - 1) / kTileSize;
-    uint32_t tilesY = (height_ + kTileSize - 1) / kTileSize;
-    TileRect all{0, 0, tilesX, tilesY};
-    TileRect traced = missPipeline_ ? tilesThatMayHit(params, extent_) : all;
+TileRect RayTracer::tracedTiles(const gpu::GpuFrameParams &params) const {
+    TileRect all{0, 0, (width_ + kTileSize - 1) / kTileSize, (height_ + kTileSize - 1) / kTileSize};
+    return missPipeline_ ? tilesThatMayHit(params, extent_) : all;
+}
+
+void RayTracer::recordSample(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
+                             const TileRect &traced) {
     recordTiles(commands, *pipeline_, params, traced);
     if (missPipeline_)
-        for (const TileRect &rest : tilesAround(traced, tilesX, tilesY))
+        for (const TileRect &rest : tilesAround(traced, (width_ + kTileSize - 1) / kTileSize,
+                                                (height_ + kTileSize - 1) / kTileSize))
             recordTiles(commands, *missPipeline_, params, rest);
     recordAccumulationBarrier(commands); // the tiles of one sample do not overlap
 }

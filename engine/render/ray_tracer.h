@@ -104,9 +104,13 @@ private:
     // next dispatch read the accumulation it wrote.
     void recordDispatch(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
                         uint32_t groupsX, uint32_t groupsY);
-    // One sample over the whole image: the full tracer on the tiles whose rays may hit
-    // something, the background variant on the rest (render/traced_tiles.h).
-    void recordSample(VkCommandBuffer commands, gpu::GpuFrameParams params);
+    // The tiles the full tracer must run on for `params`' camera (render/traced_tiles.h); the
+    // whole image when culling is off.
+    TileRect tracedTiles(const gpu::GpuFrameParams &params) const;
+    // One sample over the whole image: the full tracer on `traced`, the background variant on
+    // the rest.
+    void recordSample(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
+                      const TileRect &traced);
     // makeFrameParams with the scene's plane and light counts (the shader's loop bounds).
     gpu::GpuFrameParams frameParams(const Camera &camera, uint32_t samplesPerPixel) const;
     void recordAccumulationBarrier(VkCommandBuffer commands);

@@ -21,6 +21,8 @@ PRISM_INLINE uint indexFromFloat(float lane) {
     return uint(lane);
 }
 
+// Read by the shader as a std140 uniform block (trace_bindings.glsl), where std140 and std430
+// agree only because every member is a 16-byte vector: keep it so.
 struct GpuSceneHeader {
     vec4 gridMin;     // xyz: grid bounds min
     vec4 gridMax;     // xyz: grid bounds max
