@@ -7,9 +7,9 @@
 
 namespace prism {
 
-// Basis computed in double (then rounded once) so the shader's rays match the reference's.
-// The frame's parameters for sample 0; the plane and light counts are the caller's to set
-// (seedsAndLoops.zw: RayTracer::frameParams).
+// The frame's parameters for sample 0. The camera basis is computed in double (then rounded
+// once) so the shader's rays match the reference's; the plane and light counts are the caller's
+// to set (seedsAndLoops.zw: RayTracer::frameParams).
 gpu::GpuFrameParams makeFrameParams(const Camera &camera, uint32_t width, uint32_t height,
                                     uint32_t samplesPerPixel, uint32_t maxDepth);
 

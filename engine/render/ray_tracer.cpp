@@ -171,16 +171,14 @@ gpu::GpuFrameParams RayTracer::frameParams(const Camera &camera, uint32_t sample
 }
 
 TileRect RayTracer::tracedTiles(const gpu::GpuFrameParams &params) const {
-    TileRect all{0, 0, (width_ + kTileSize - 1) / kTileSize, (height_ + kTileSize - 1) / kTileSize};
-    return missPipeline_ ? tilesThatMayHit(params, extent_) : all;
+    return missPipeline_ ? tilesThatMayHit(params, extent_) : imageTiles(width_, height_);
 }
 
 void RayTracer::recordSample(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
                              const TileRect &traced) {
     recordTiles(commands, *pipeline_, params, traced);
     if (missPipeline_)
-        for (const TileRect &rest : tilesAround(traced, (width_ + kTileSize - 1) / kTileSize,
-                                                (height_ + kTileSize - 1) / kTileSize))
+        for (const TileRect &rest : tilesAround(traced, imageTiles(width_, height_)))
             recordTiles(commands, *missPipeline_, params, rest);
     recordAccumulationBarrier(commands); // the tiles of one sample do not overlap
 }

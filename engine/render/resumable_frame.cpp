@@ -46,8 +46,7 @@ void RayTracer::traceSampleResumably(const Camera &camera, uint32_t sample,
     const ResumePlan &plan = resumePlan_;
     uint32_t tilesX = (width_ + plan.tileWidth - 1) / plan.tileWidth;
     uint32_t tilesY = (height_ + plan.tileHeight - 1) / plan.tileHeight;
-    gpu::GpuFrameParams params =
-        frameParams(camera, samplesPerPixel);
+    gpu::GpuFrameParams params = frameParams(camera, samplesPerPixel);
     params.control.w = plan.walkLogSize;
     setFrameSample(params, sample);
     const auto *counters = static_cast<const gpu::GpuStats *>(stats_.mapped());

@@ -10,16 +10,14 @@
 namespace prism {
 namespace {
 
-// How an array may be read as texels: its format and bytes per texel.
+// How an array is read as texels: its format and bytes per texel.
 struct TexelLayout {
-    VkFormat format = VK_FORMAT_UNDEFINED; // undefined: storage buffer only
+    VkFormat format = VK_FORMAT_UNDEFINED;
     uint64_t bytes = 0;
 };
-constexpr TexelLayout kStorageOnly{};
 constexpr TexelLayout kUintTexels{VK_FORMAT_R32_UINT, 4};
 constexpr TexelLayout kVec4Texels{VK_FORMAT_R32G32B32A32_SFLOAT, 16};
 constexpr TexelLayout kUvec4Texels{VK_FORMAT_R32G32B32A32_UINT, 16};
-constexpr uint32_t kNoTexelBinding = ~0u;
 
 class Uploader {
 public:
@@ -30,11 +28,10 @@ public:
         uint64_t bytes = data.size();
         checkFits(bytes, what, texels);
         SceneArray array;
-        array.buffer = upload(data.data(), bytes, texels.bytes != 0);
-        if (texels.bytes != 0)
-            array.texels = vk::BufferView(
-                context_, array.buffer.handle(), texels.format,
-                std::min<uint64_t>(array.buffer.size(), limits_.texelElements * texels.bytes));
+        array.buffer = upload(data.data(), bytes, true);
+        array.texels = vk::BufferView(
+            context_, array.buffer.handle(), texels.format,
+            std::min<uint64_t>(array.buffer.size(), limits_.texelElements * texels.bytes));
         return array;
     }
 
@@ -61,7 +58,7 @@ private:
     void checkFits(uint64_t bytes, const char *what, TexelLayout texels) const {
         std::string prefix = std::string("scene too large for ") + context_.deviceName() +
                              ": the " + what + " array ";
-        if (limits_.texelReads && texels.bytes != 0) {
+        if (limits_.texelReads) {
             uint64_t elements = bytes / texels.bytes;
             if (elements > limits_.texelElements)
                 throw Error(prefix + "has " + std::to_string(elements) +
@@ -90,7 +87,7 @@ struct ArrayBinding {
     std::span<const std::byte> (*data)(const PackedScene &);
     const char *what;
     uint32_t storageBinding;
-    uint32_t texelBinding; // kNoTexelBinding: storage only
+    uint32_t texelBinding;
     TexelLayout texels;
 };
 
@@ -145,8 +142,7 @@ void bindScene(vk::ComputePipeline &pipeline, const SceneBuffers &b, const Array
         const SceneArray &array = b.*a.array;
         pipeline.bindBuffer(a.storageBinding, array.buffer.handle(),
                             std::min<uint64_t>(array.buffer.size(), limits.storageBytes));
-        if (a.texelBinding != kNoTexelBinding)
-            pipeline.bindTexelBuffer(a.texelBinding, array.texels.handle());
+        pipeline.bindTexelBuffer(a.texelBinding, array.texels.handle());
     }
 }
 
@@ -163,8 +159,7 @@ std::vector<VkDescriptorType> traceDescriptorTypes() {
     types[kBindingAovImage] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     types[kBindingHeader] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     for (const ArrayBinding &a : kArrays)
-        if (a.texelBinding != kNoTexelBinding)
-            types[a.texelBinding] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+        types[a.texelBinding] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     return types;
 }
 

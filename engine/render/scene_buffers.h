@@ -25,7 +25,7 @@ struct SceneArray {
 struct ArrayLimits {
     uint64_t storageBytes = 0;  // maxStorageBufferRange, or a lower limit a test sets
     uint64_t texelElements = 0; // maxTexelBufferElements
-    bool texelReads = true;     // arrays with texel views are read through them
+    bool texelReads = true;     // arrays are read through their texel views
 };
 
 struct SceneBuffers {

@@ -143,15 +143,14 @@ SceneExtent sceneExtent(const Scene &scene, const Grid &grid, bool hasFinite) {
 
 TileRect tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent) {
     uint32_t width = frame.image.x, height = frame.image.y;
-    uint32_t tilesX = (width + kTileSize - 1) / kTileSize;
-    uint32_t tilesY = (height + kTileSize - 1) / kTileSize;
+    TileRect image = imageTiles(width, height);
     // The camera as the shader has it: the frame's floats.
     RayFrame cam{glm::dvec3(frame.eye), glm::dvec3(frame.forward), glm::dvec3(frame.du),
                  glm::dvec3(frame.dv), gpu::isParallelCamera(frame)};
     std::array<glm::dvec3, 8> corners = boxCorners(extent);
-    TileRect rect{tilesX, tilesY, 0, 0};
-    for (uint32_t ty = 0; ty < tilesY; ++ty)
-        for (uint32_t tx = 0; tx < tilesX; ++tx) {
+    TileRect rect{image.x1, image.y1, 0, 0};
+    for (uint32_t ty = 0; ty < image.y1; ++ty)
+        for (uint32_t tx = 0; tx < image.x1; ++tx) {
             if (tx >= rect.x0 && tx < rect.x1 && ty >= rect.y0 && ty < rect.y1)
                 continue; // already inside
             if (tileMayHit(cam, tileSpan(tx, ty, width, height), extent, corners)) {
@@ -164,9 +163,10 @@ TileRect tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &ex
     return rect.empty() ? TileRect{} : rect;
 }
 
-std::vector<TileRect> tilesAround(const TileRect &traced, uint32_t tilesX, uint32_t tilesY) {
+std::vector<TileRect> tilesAround(const TileRect &traced, const TileRect &image) {
+    uint32_t tilesX = image.x1, tilesY = image.y1;
     if (traced.empty())
-        return {TileRect{0, 0, tilesX, tilesY}};
+        return {image};
     std::vector<TileRect> rest = {{0, 0, tilesX, traced.y0},
                                   {0, traced.y1, tilesX, tilesY},
                                   {0, traced.y0, traced.x0, traced.y1},

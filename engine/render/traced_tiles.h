@@ -26,6 +26,11 @@ struct TileRect {
     uint32_t height() const { return empty() ? 0 : y1 - y0; }
 };
 
+// Every tile of a width x height image.
+inline TileRect imageTiles(uint32_t width, uint32_t height) {
+    return {0, 0, (width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize};
+}
+
 // What a camera ray can hit, in the coordinates the tracer uses: the grid's box (it holds every
 // finite primitive) and the planes as (unit normal, offset) with n.p = offset on the plane.
 struct SceneExtent {
@@ -43,8 +48,8 @@ SceneExtent sceneExtent(const Scene &scene, const Grid &grid, bool hasFinite);
 // hit something is left to the background.
 TileRect tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent);
 
-// The rest of the image's tiles as at most four rectangles (above, below, left, right of
-// `traced`), for the variant that only sees the background.
-std::vector<TileRect> tilesAround(const TileRect &traced, uint32_t tilesX, uint32_t tilesY);
+// The rest of `image`'s tiles (imageTiles) as at most four rectangles (above, below, left,
+// right of `traced`), for the variant that only sees the background.
+std::vector<TileRect> tilesAround(const TileRect &traced, const TileRect &image);
 
 } // namespace prism

@@ -28,7 +28,8 @@ struct GpuSceneHeader {
     vec4 gridMax;     // xyz: grid bounds max
     vec4 cellSize;    // xyz: size of one cell; w unused
     uvec4 gridRes;    // xyz: cells per axis; w: cell count
-    uvec4 counts;     // x: spheres, y: planes, z: triangles, w: lights
+    uvec4 counts;     // x: spheres, y: planes, z: triangles, w: lights (host and tests only:
+                      // the shader's loop bounds come in GpuFrameParams::seedsAndLoops)
     uvec4 idEnd;      // [kind]: end of that finite kind's grid id range (primitive_kinds.h)
     vec4 background;  // rgb
     vec4 ambient;     // rgb: scene ambient light
@@ -36,15 +37,6 @@ struct GpuSceneHeader {
     uvec4 voxels;     // adaptive grid: xyz voxels per axis, w: voxels per top cell (log2)
     vec4 environment; // x: texture index (-1: none), y: intensity, z: rotation about +y (rad)
 };
-// The counts' accessors take the vector, not the header: the shader's header is a uniform
-// block, and glslang passes a block's struct to a function through an OpStore of mismatched
-// types (invalid SPIR-V before 1.4's OpCopyLogical).
-PRISM_INLINE uint headerPlaneCount(PRISM_IN(uvec4) counts) {
-    return counts.y;
-}
-PRISM_INLINE uint headerLightCount(PRISM_IN(uvec4) counts) {
-    return counts.w;
-}
 
 // An adaptive-grid cell's box in voxels: 16 bits a coordinate (accel/grid.h, packCellBox).
 PRISM_INLINE ivec3 cellBoxMin(PRISM_IN(uvec4) box) {

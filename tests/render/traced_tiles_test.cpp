@@ -71,8 +71,8 @@ double checkConservative(const gpu::GpuFrameParams &frame, const SceneExtent &ex
                     return 1.0;
                 }
             }
-    uint32_t tiles = ((frame.image.x + 7) / 8) * ((frame.image.y + 7) / 8);
-    return double(rect.width() * rect.height()) / tiles;
+    TileRect image = imageTiles(frame.image.x, frame.image.y);
+    return double(rect.width() * rect.height()) / (image.width() * image.height());
 }
 
 gpu::GpuFrameParams frameFor(const Camera &camera, uint32_t width, uint32_t height) {
@@ -151,7 +151,7 @@ TEST(TracedTiles, TheRestCoversTheImageOnce) {
     for (TileRect traced : {TileRect{}, TileRect{0, 0, 9, 7}, TileRect{2, 1, 5, 4},
                             TileRect{0, 3, 9, 5}, TileRect{4, 0, 9, 7}}) {
         std::vector<int> covered(tilesX * tilesY, 0);
-        std::vector<TileRect> all = tilesAround(traced, tilesX, tilesY);
+        std::vector<TileRect> all = tilesAround(traced, imageTiles(tilesX * 8 - 3, tilesY * 8));
         all.push_back(traced);
         for (const TileRect &r : all)
             for (uint32_t y = r.y0; y < r.y1; ++y)
