@@ -23,6 +23,9 @@ layout(constant_id = kSpecStackSize) const uint STACK_SIZE = 9u;
 // lavapipe, and not capped at maxStorageBufferRange; docs/benchmarks.md).
 layout(constant_id = kSpecTexelBuffers) const bool TEXEL_BUFFERS = false;
 layout(constant_id = kSpecAdaptiveGrid) const bool ADAPTIVE_GRID = false;
+// The grid's cells list triangles only, and cellTriangleArray holds each entry's triangle: a test
+// reads its vertices by the entry, with no primitive id (render/tracer_features.h).
+layout(constant_id = kSpecCellTriangles) const bool CELL_TRIANGLES = false;
 // The studies' stand-ins for methods Prism replaced (trace_interface.h); the defaults fold away.
 layout(constant_id = kSpecFixedRayOffset) const float FIXED_RAY_OFFSET = 0.0;
 layout(constant_id = kSpecTriangleTest) const uint TRIANGLE_TEST = kTriangleTestWatertight;
@@ -85,6 +88,9 @@ layout(std430, set = 0, binding = kBindingInstances) readonly buffer InstanceBuf
 layout(std430, set = 0, binding = kBindingMeshGrids) readonly buffer MeshGridBuffer {
     GpuMeshGrid meshGridArray[];
 };
+layout(std430, set = 0, binding = kBindingCellTriangles) readonly buffer CellTriangleBuffer {
+    GpuCellTriangle cellTriangleArray[];
+};
 layout(set = 0, binding = kBindingCellStartTexels) uniform usamplerBuffer cellStartTexels;
 layout(set = 0, binding = kBindingCellPrimitiveTexels) uniform usamplerBuffer cellPrimitiveTexels;
 layout(set = 0, binding = kBindingSphereTexels) uniform samplerBuffer sphereTexels;
@@ -99,6 +105,7 @@ layout(set = 0, binding = kBindingMaterialTexels) uniform samplerBuffer material
 layout(set = 0, binding = kBindingLightTexels) uniform samplerBuffer lightTexels;
 layout(set = 0, binding = kBindingMeshGridTexels) uniform usamplerBuffer meshGridTexels;
 layout(set = 0, binding = kBindingTextureTexels) uniform usamplerBuffer textureInfoTexels;
+layout(set = 0, binding = kBindingCellTriangleTexels) uniform usamplerBuffer cellTriangleTexels;
 
 layout(push_constant) uniform FrameBlock { GpuFrameParams frame; };
 
@@ -108,6 +115,13 @@ uint cellStartAt(uint i) {
 }
 uint cellPrimitiveAt(uint k) {
     return TEXEL_BUFFERS ? texelFetch(cellPrimitiveTexels, int(k)).x : cellPrimitiveArray[k];
+}
+// Row `row` of cell entry k's triangle (GpuCellTriangle: row 0 has the triangle's index in w).
+uvec4 cellTriangleRow(uint k, uint row) {
+    if (TEXEL_BUFFERS)
+        return texelFetch(cellTriangleTexels, int(3u * k + row));
+    return row == 0u ? cellTriangleArray[k].p0
+                     : (row == 1u ? cellTriangleArray[k].p1 : cellTriangleArray[k].p2);
 }
 uint gridEntryAt(uint i) {
     return TEXEL_BUFFERS ? texelFetch(gridEntryTexels, int(i)).x : gridEntryArray[i];

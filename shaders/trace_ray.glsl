@@ -94,6 +94,10 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
                     // Not enough left for this test (an instance's walk needs the reserve):
                     // go on from here next time. A resumed walk always makes its first test,
                     // so that a replay that spent most of the budget cannot stall the sample.
+                    if (CELL_TRIANGLES) { // no id: the entry is the triangle
+                        testCellTriangle(k, origin, dir, wray, hit);
+                        continue;
+                    }
                     uint id = cellPrimitiveAt(k);
                     bool instanceNext = HAS_INSTANCES && id >= header.idEnd[kKindTriangle];
                     if (RESUMABLE && HAS_INSTANCES && progressed &&

@@ -14,12 +14,12 @@ const uint kNoInstance = 0xFFFFFFFFu;
 
 #include "resume.glsl"
 
-// Tests triangle `tri` (of the triangle array) and records it in `hit` when closer than hit.t.
-bool testTriangle(uint tri, vec3 origin, vec3 dir, WatertightRay wray, inout Hit hit) {
+// Tests triangle `tri` (of the triangle array), whose vertices are p0, p1, p2, and records it in
+// `hit` when closer than hit.t.
+bool testTriangleAt(uint tri, vec3 p0, vec3 p1, vec3 p2, vec3 origin, vec3 dir,
+                    WatertightRay wray, inout Hit hit) {
     float t;
     vec2 b12;
-    vec3 p0 = triangleVertex(tri, 0u), p1 = triangleVertex(tri, 1u);
-    vec3 p2 = triangleVertex(tri, 2u);
     bool hitTriangle;
     if (MOLLER_TRUMBORE)
         hitTriangle = intersectTriangleMollerTrumbore(origin, dir, p0, p1, p2, hit.t, t, b12);
@@ -33,6 +33,19 @@ bool testTriangle(uint tri, vec3 origin, vec3 dir, WatertightRay wray, inout Hit
         hit.instance = kNoInstance;
     }
     return hitTriangle;
+}
+
+bool testTriangle(uint tri, vec3 origin, vec3 dir, WatertightRay wray, inout Hit hit) {
+    return testTriangleAt(tri, triangleVertex(tri, 0u), triangleVertex(tri, 1u),
+                          triangleVertex(tri, 2u), origin, dir, wray, hit);
+}
+
+// The triangle of cell entry k (CELL_TRIANGLES): three texels, no primitive id to fetch first.
+void testCellTriangle(uint k, vec3 origin, vec3 dir, WatertightRay wray, inout Hit hit) {
+    uvec4 row0 = cellTriangleRow(k, 0u);
+    testTriangleAt(cellTriangleIndex(row0), uintBitsToFloat(row0.xyz),
+                   uintBitsToFloat(cellTriangleRow(k, 1u).xyz),
+                   uintBitsToFloat(cellTriangleRow(k, 2u).xyz), origin, dir, wray, hit);
 }
 
 // Slab test against a box; returns the parametric range inside it.

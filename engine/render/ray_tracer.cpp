@@ -30,9 +30,12 @@ ArrayLimits arrayLimits(const vk::Context &context, const TracerOptions &options
 
 RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid, uint32_t width,
                      uint32_t height, const TracerOptions &options)
-    : context_(context), features_(chooseFeatures(scene, grid, options)),
+    : context_(context),
+      features_(
+          chooseFeatures(scene, grid, options, context.properties().limits.maxTexelBufferElements)),
       limits_(arrayLimits(context, options)), runner_(context),
-      scene_(uploadScene(context, runner_, packScene(scene, grid), limits_)),
+      scene_(
+          uploadScene(context, runner_, packScene(scene, grid, features_.cellTriangles), limits_)),
       stats_(context, sizeof(gpu::GpuStats),
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT, // snapshots for the viewer

@@ -109,6 +109,8 @@ const ArrayBinding kArrays[] = {
      kBindingCellStartTexels, kUintTexels},
     {&B::cellPrimitives, bytesOf<&P::cellPrimitives>, "grid cell primitive", kBindingCellPrimitives,
      kBindingCellPrimitiveTexels, kUintTexels},
+    {&B::cellTriangles, bytesOf<&P::cellTriangles>, "grid cell triangle", kBindingCellTriangles,
+     kBindingCellTriangleTexels, kUvec4Texels},
     {&B::textures, bytesOf<&P::textures>, "texture", kBindingTextures, kBindingTextureTexels,
      kUvec4Texels},
     {&B::texels, bytesOf<&P::texels>, "texture texel", kBindingTexels, kBindingImageTexels,

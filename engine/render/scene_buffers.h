@@ -38,6 +38,7 @@ struct SceneBuffers {
     SceneArray lights;
     SceneArray cellStart;
     SceneArray cellPrimitives;
+    SceneArray cellTriangles;
     SceneArray textures;
     SceneArray texels;
     SceneArray gridEntries;

@@ -1,5 +1,6 @@
 #include "render/scene_packing.h"
 
+#include <bit>
 #include <string>
 
 #include "core/error.h"
@@ -58,9 +59,26 @@ void packInstances(const Scene &scene, const Grid &grid, const std::vector<uint3
     }
 }
 
+// Each cell entry's triangle, in list order. The grid's ids are triangle indices here: a scene
+// with triangles only numbers them from 0 (scene/primitive_ids.h).
+void packCellTriangles(const Scene &scene, PackedScene &packed) {
+    if (!scene.spheres.empty() || !scene.instances.empty())
+        throw Error("cell triangles need a scene whose grid holds triangles only");
+    auto bits = [](const glm::vec3 &p, uint32_t w) {
+        return glm::uvec4(std::bit_cast<uint32_t>(p.x), std::bit_cast<uint32_t>(p.y),
+                          std::bit_cast<uint32_t>(p.z), w);
+    };
+    packed.cellTriangles.reserve(packed.cellPrimitives.size());
+    for (uint32_t id : packed.cellPrimitives) {
+        const Triangle &t = scene.triangles.at(id);
+        packed.cellTriangles.push_back(
+            {bits(glm::vec3(t.p[0]), id), bits(glm::vec3(t.p[1]), 0), bits(glm::vec3(t.p[2]), 0)});
+    }
+}
+
 } // namespace
 
-PackedScene packScene(const Scene &scene, const Grid &grid) {
+PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles) {
     PackedScene packed;
     gpu::GpuSceneHeader &h = packed.header;
     h.gridMin = glm::vec4(grid.boundsMin, 0.0f);
@@ -131,6 +149,8 @@ PackedScene packScene(const Scene &scene, const Grid &grid) {
 
     packed.cellStart = grid.cellStart;
     packed.cellPrimitives = grid.cellPrimitives;
+    if (cellTriangles)
+        packCellTriangles(scene, packed);
     packInstances(scene, grid, firstTriangle, packed);
     packed.gridEntries = grid.entries;
     packed.cellBoxes = grid.cellBoxes;

@@ -21,8 +21,9 @@ struct PackedScene {
     std::vector<glm::vec4> texels;
     std::vector<uint32_t> cellStart;
     std::vector<uint32_t> cellPrimitives;
-    std::vector<uint32_t> gridEntries; // adaptive grid only
-    std::vector<glm::uvec4> cellBoxes; // adaptive grid only
+    std::vector<gpu::GpuCellTriangle> cellTriangles; // with cellTriangles only: one per entry
+    std::vector<uint32_t> gridEntries;               // adaptive grid only
+    std::vector<glm::uvec4> cellBoxes;               // adaptive grid only
     std::vector<gpu::GpuInstance> instances;
     std::vector<gpu::GpuMeshGrid> meshGrids; // one per prototype
 };
@@ -31,6 +32,8 @@ struct PackedScene {
 // scene grid, then each prototype's grid (gpu::GpuMeshGrid says where).
 // Positions become 32-bit floats here: give it a scene centred on the camera
 // (scene/scene_origin.h), with the grid built from that same scene.
-PackedScene packScene(const Scene &scene, const Grid &grid);
+// With cellTriangles (a scene whose grid lists triangles only: TracerFeatures::cellTriangles)
+// each cell entry's triangle is also stored in list order.
+PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles = false);
 
 } // namespace prism

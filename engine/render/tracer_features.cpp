@@ -38,7 +38,8 @@ TracerFeatures featuresOf(const Scene &scene) {
     return f;
 }
 
-TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const TracerOptions &options) {
+TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const TracerOptions &options,
+                              uint64_t maxTexelElements) {
     if (options.maxDepth < 1 || options.maxDepth > 64)
         throw Error("ray depth " + std::to_string(options.maxDepth) + " is outside 1..64");
     TracerFeatures f = featuresOf(scene);
@@ -61,6 +62,10 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
                     " is not a finite number >= 0 (0: Prism's relative offset)");
     f.fixedRayOffset = options.fixedRayOffset;
     f.mollerTrumbore = options.mollerTrumbore;
+    uint32_t finiteKinds = f.kinds & ~(1u << gpu::kKindPlane);
+    f.cellTriangles = options.cellTriangles && f.texelBuffers &&
+                      finiteKinds == (1u << gpu::kKindTriangle) &&
+                      3 * uint64_t(grid.cellPrimitives.size()) <= maxTexelElements;
     return f;
 }
 
@@ -68,7 +73,7 @@ TracerFeatures TracerFeatures::backgroundOnly() const {
     TracerFeatures f = *this;
     f.kinds = 0;
     f.reflection = f.transmission = f.textures = f.areaLights = f.vertexNormals = false;
-    f.surfaceMaps = f.shadows = f.adaptiveGrid = false;
+    f.surfaceMaps = f.shadows = f.adaptiveGrid = f.cellTriangles = false;
     return f;
 }
 
@@ -87,6 +92,7 @@ std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
             {gpu::kSpecTexelBuffers, texelBuffers},
             {gpu::kSpecAdaptiveGrid, adaptiveGrid},
             {gpu::kSpecHasSurfaceMaps, surfaceMaps},
+            {gpu::kSpecCellTriangles, cellTriangles},
             {gpu::kSpecProfileWalkDetail, profile >= 2},
             {gpu::kSpecResumable, resumable},
             {gpu::kSpecResumeLaneBudget,

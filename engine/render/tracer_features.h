@@ -42,6 +42,10 @@ struct TracerOptions {
     // Tiles whose camera rays provably miss everything get a variant with no geometry
     // (render/traced_tiles.h); off only to measure what that saves (prism-bench no-cull).
     bool cullMissTiles = true;
+    // Triangle-only scenes: each cell entry's triangle stored in list order, 48 bytes an entry,
+    // so a test fetches no primitive id (GpuCellTriangle); off only to measure what that saves
+    // (prism-bench no-cell-triangles).
+    bool cellTriangles = true;
 };
 
 struct TracerFeatures {
@@ -63,6 +67,7 @@ struct TracerFeatures {
     uint32_t resumeLaneBudget = 0; // TracerOptions::resumeLaneBudget
     float fixedRayOffset = 0.0f;   // TracerOptions::fixedRayOffset
     bool mollerTrumbore = false;   // TracerOptions::mollerTrumbore
+    bool cellTriangles = false;    // the cell triangle array is packed and walked
 
     bool has(uint32_t kind) const { return (kinds >> kind) & 1u; }
     // The same tracer for rays that hit nothing: no primitive kind and nothing that only a hit
@@ -75,7 +80,10 @@ struct TracerFeatures {
 TracerFeatures featuresOf(const Scene &scene);
 
 // The variant to compile: the scene's features with the caller's options applied.
+// Cell triangles are used where the scene's finite primitives are all triangles, arrays are read
+// as texels, and the array fits in maxTexelElements texels (else the cells keep their ids).
 // Throws prism::Error for a depth outside 1..64.
-TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const TracerOptions &options);
+TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const TracerOptions &options,
+                              uint64_t maxTexelElements = UINT64_MAX);
 
 } // namespace prism

@@ -84,6 +84,18 @@ PRISM_INLINE uint triangleMaterial(PRISM_IN(GpuTriangle) t) {
     return indexFromFloat(t.v0.w);
 }
 
+// A cell-list entry of a triangle-only scene (kBindingCellTriangles): the triangle's vertices
+// in the order of the cell lists, so the walk reads the triangle where it reads the list and
+// needs no primitive id. Integer texels with the floats as bits: read back exactly.
+struct GpuCellTriangle {
+    uvec4 p0; // xyz: vertex 0 (float bits); w: the triangle's index in the triangle array
+    uvec4 p1; // xyz: vertex 1
+    uvec4 p2; // xyz: vertex 2
+};
+PRISM_INLINE uint cellTriangleIndex(PRISM_IN(uvec4) p0) {
+    return p0.w;
+}
+
 // A placement of a mesh prototype (scene.h, Instance): the similarity both ways, as the rows of
 // 3x4 matrices (p' = (dot(row0.xyz, p) + row0.w, ...)). The walk takes rays into the prototype's
 // space (toObject); shading takes the hit triangle out of it (toWorld).
@@ -307,6 +319,7 @@ static_assert(offsetof(GpuSceneHeader, ambient) == 112);
 static_assert(sizeof(GpuSphere) == 32);
 static_assert(sizeof(GpuPlane) == 32);
 static_assert(sizeof(GpuTriangle) == 48);
+static_assert(sizeof(GpuCellTriangle) == 48);
 static_assert(sizeof(GpuTriangleShading) == 80);
 static_assert(sizeof(GpuInstance) == 112);
 static_assert(offsetof(GpuInstance, toWorld0) == 48);

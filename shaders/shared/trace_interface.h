@@ -50,7 +50,11 @@ PRISM_CONST(uint, kBindingMaterialTexels, 30u); // rgba32f, 4 per GpuMaterial
 PRISM_CONST(uint, kBindingLightTexels, 31u);    // rgba32f, 2 per GpuLight
 PRISM_CONST(uint, kBindingMeshGridTexels, 32u); // rgba32ui, 4 per GpuMeshGrid (floats as bits)
 PRISM_CONST(uint, kBindingTextureTexels, 33u);  // rgba32ui, 1 per GpuTexture
-PRISM_CONST(uint, kTraceBindingCount, 34u);
+// Triangle-only scenes: each cell entry's triangle itself, in the order of the cell lists
+// (GpuCellTriangle), so a test reads three texels and no primitive id (CELL_TRIANGLES).
+PRISM_CONST(uint, kBindingCellTriangles, 34u);
+PRISM_CONST(uint, kBindingCellTriangleTexels, 35u); // rgba32ui, 3 per cell entry
+PRISM_CONST(uint, kTraceBindingCount, 36u);
 
 // Specialization constants: features a scene does not use are compiled out.
 PRISM_CONST(uint, kSpecKinds, 0u); // bit k: the scene has primitives of kind k
@@ -66,6 +70,7 @@ PRISM_CONST(uint, kSpecStackSize, 9u);      // 2 * maxDepth - 1
 PRISM_CONST(uint, kSpecTexelBuffers, 10u);
 PRISM_CONST(uint, kSpecAdaptiveGrid, 11u);   // walk the adaptive grid's cells, not a regular DDA
 PRISM_CONST(uint, kSpecHasSurfaceMaps, 12u); // some material has a normal or bump map
+PRISM_CONST(uint, kSpecCellTriangles, 15u);  // walk the cell triangle array (binding 35)
 // For the studies only (docs/studies, prism-bench variants): the methods Prism replaced, so that
 // where they fail can be measured. At their defaults they fold away to Prism's own methods.
 PRISM_CONST(uint, kSpecFixedRayOffset, 13u);    // float: 0 = relative offset; > 0: fixed, in units

@@ -45,6 +45,8 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.tracer.shadows = false;
         } else if (token == "no-cull") {
             v.tracer.cullMissTiles = false;
+        } else if (token == "no-cell-triangles") {
+            v.tracer.cellTriangles = false;
         } else if (token == "resumable") {
             v.tracer.resumable = true;
         } else if (token == "texel" || token == "storage") {
@@ -58,10 +60,12 @@ BenchVariant parseBenchVariant(const std::string &text) {
         } else if (token == "triangle=watertight" || token == "triangle=mt") {
             v.tracer.mollerTrumbore = token == "triangle=mt";
         } else {
-            throw Error("variant " + text + ": unknown part '" + token +
-                        "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
-                        "no-reflection, no-refraction, no-shadows, no-cull, texel, storage, "
-                        "resumable, offset=relative|E, triangle=watertight|mt, flat; join with +)");
+            throw Error(
+                "variant " + text + ": unknown part '" + token +
+                "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
+                "no-reflection, no-refraction, no-shadows, no-cull, no-cell-triangles, texel, "
+                "storage, "
+                "resumable, offset=relative|E, triangle=watertight|mt, flat; join with +)");
         }
     }
     return v;

@@ -1,0 +1,128 @@
+// Cell triangles (GpuCellTriangle): in a scene whose grid lists triangles only, each cell entry's
+// triangle is stored in list order so that a test needs no primitive id. The packed entries must
+// be the listed triangles, exactly; the variant must be chosen only where it applies and fits;
+// and it must change no pixel, AOV or ray count on either grid, resumed or not.
+#include <bit>
+#include <cstdint>
+
+#include <gtest/gtest.h>
+
+#include "accel/grid.h"
+#include "core/error.h"
+#include "gpu_fixture.h"
+#include "render/resume_plan.h"
+#include "render/scene_packing.h"
+#include "render/tracer_features.h"
+#include "render_helpers.h"
+#include "scene_builders.h"
+
+namespace prism::test {
+namespace {
+
+// A floor, and flat and smooth octahedra (vertex normals: shading reads the hit triangle's own
+// record, so a wrong triangle index shows) that reflect, refract and cast shadows.
+Scene triangleScene() {
+    Scene scene = sceneWithDefaultMaterial();
+    uint32_t floor = addMaterial(scene, "floor", {0.7f, 0.7f, 0.7f}, 0.2f);
+    uint32_t mirror = addMaterial(scene, "mirror", {0.9f, 0.9f, 0.9f}, 0.8f);
+    uint32_t glass = addMaterial(scene, opticalMaterial("glass", 0.1f, 0.85f, 1.5f));
+    uint32_t red = addMaterial(scene, "red", {0.9f, 0.2f, 0.1f});
+    uint32_t blue = addMaterial(scene, "blue", {0.2f, 0.3f, 0.9f});
+    scene.camera.eye = {0.0f, 2.5f, 7.0f};
+    scene.camera.look = {0.0f, 0.8f, 0.0f};
+    scene.camera.fovDegrees = 50.0f;
+    scene.background = {0.1f, 0.1f, 0.15f};
+    scene.lights.push_back(Light{{4.0f, 6.0f, 5.0f}, {1.0f, 1.0f, 1.0f}, 0.3f});
+    scene.planes.push_back(Plane{{0.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}, floor});
+    addOctahedron(scene, {-1.6f, 1.0f, 0.0f}, 1.0f, mirror);
+    addSmoothOctahedron(scene, {0.9f, 0.7f, 1.2f}, 0.7f, glass);
+    addSmoothOctahedron(scene, {1.8f, 0.5f, -1.0f}, 0.5f, red);
+    addOctahedron(scene, {0.2f, 0.6f, -1.6f}, 0.6f, blue);
+    return scene;
+}
+
+TEST(CellTriangles, AreTheListedTrianglesInListOrder) {
+    Scene scene = triangleScene();
+    for (const GridOptions &options : {GridOptions{}, parseGridOption("6")}) {
+        Grid grid = buildGrid(scene, options);
+        PackedScene packed = packScene(scene, grid, true);
+        ASSERT_EQ(packed.cellTriangles.size(), grid.cellPrimitives.size());
+        ASSERT_GT(packed.cellTriangles.size(), scene.triangles.size()) << "some listed twice";
+        for (size_t k = 0; k < packed.cellTriangles.size(); ++k) {
+            const gpu::GpuCellTriangle &c = packed.cellTriangles[k];
+            uint32_t id = grid.cellPrimitives[k];
+            ASSERT_EQ(gpu::cellTriangleIndex(c.p0), id);
+            const gpu::GpuTriangle &t = packed.triangles[id];
+            for (int axis = 0; axis < 3; ++axis) {
+                EXPECT_EQ(c.p0[axis], std::bit_cast<uint32_t>(t.v0[axis]));
+                EXPECT_EQ(c.p1[axis], std::bit_cast<uint32_t>(t.v1[axis]));
+                EXPECT_EQ(c.p2[axis], std::bit_cast<uint32_t>(t.v2[axis]));
+            }
+        }
+        EXPECT_TRUE(packScene(scene, grid).cellTriangles.empty());
+    }
+    Scene withSphere = scene;
+    withSphere.spheres.push_back(Sphere{{0.0, 3.0, 0.0}, 0.5f, 0});
+    EXPECT_THROW(packScene(withSphere, buildGrid(withSphere), true), Error);
+}
+
+TEST(CellTriangles, ChosenOnlyWhereTheCellsListTrianglesAndTheyFit) {
+    Scene scene = triangleScene();
+    Grid grid = buildGrid(scene);
+    uint64_t texels = 3 * grid.cellPrimitives.size();
+    TracerOptions options;
+    EXPECT_TRUE(chooseFeatures(scene, grid, options).cellTriangles);
+    EXPECT_TRUE(chooseFeatures(scene, grid, options, texels).cellTriangles);
+    EXPECT_FALSE(chooseFeatures(scene, grid, options, texels - 1).cellTriangles) << "too big";
+    EXPECT_FALSE(chooseFeatures(scene, grid, options).backgroundOnly().cellTriangles);
+    TracerOptions off = options;
+    off.cellTriangles = false;
+    EXPECT_FALSE(chooseFeatures(scene, grid, off).cellTriangles);
+    TracerOptions storage = options;
+    storage.texelBuffers = false;
+    EXPECT_FALSE(chooseFeatures(scene, grid, storage).cellTriangles);
+    Scene withSphere = scene;
+    withSphere.spheres.push_back(Sphere{{0.0, 3.0, 0.0}, 0.5f, 0});
+    EXPECT_FALSE(chooseFeatures(withSphere, buildGrid(withSphere), options).cellTriangles);
+    Scene withInstance = scene;
+    withInstance.prototypes.push_back(MeshPrototype{"copy", scene.triangles});
+    withInstance.instances.push_back(Instance{});
+    EXPECT_FALSE(chooseFeatures(withInstance, grid, options).cellTriangles);
+}
+
+class CellTrianglesRender : public GpuTest {};
+
+TEST_F(CellTrianglesRender, ChangeNoPixel) {
+    Scene scene = triangleScene();
+    TracerOptions resumed;
+    resumed.resumable = true;
+    resumed.resumeLaneBudget = 300; // interrupts walks everywhere
+    resumed.resumeMemoryBytes = 20 << 10;
+    struct Case {
+        const char *grid;
+        TracerOptions options;
+        uint32_t depth;
+    };
+    for (const Case &c :
+         {Case{"adaptive", {}, 4}, Case{"6", {}, 4}, Case{"adaptive", resumed, 2}}) {
+        SCOPED_TRACE(c.grid);
+        TracerOptions withCells = c.options, withIds = c.options;
+        withCells.writeAov = withIds.writeAov = true;
+        withIds.cellTriangles = false;
+        GridOptions grid = parseGridOption(c.grid);
+        GpuRender cells = renderGpu(context(), scene, 64, 48, 2, c.depth, grid, withCells);
+        GpuRender ids = renderGpu(context(), scene, 64, 48, 2, c.depth, grid, withIds);
+        expectSameFrame(cells, ids);
+        EXPECT_GT(cells.frame.rays.secondary, 0u);
+        EXPECT_EQ(cells.frame.resumeDispatches, ids.frame.resumeDispatches);
+        if (c.options.resumable) { // more dispatches than one per tile and sample: interrupted
+            ResumePlan plan = planResume(64, 48, c.depth, 1, true, resumed.resumeMemoryBytes);
+            uint32_t tiles = ((64 + plan.tileWidth - 1) / plan.tileWidth) *
+                             ((48 + plan.tileHeight - 1) / plan.tileHeight);
+            EXPECT_GT(cells.frame.resumeDispatches, 2 * tiles);
+        }
+    }
+}
+
+} // namespace
+} // namespace prism::test
