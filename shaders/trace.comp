@@ -220,9 +220,20 @@ void addCounts(uint primary, uint shadow, uint secondary, uint loopCut) {
 }
 
 void main() {
+    // The pixel: resumable tracing dispatches a rectangle of tiles from the frame's tile origin;
+    // otherwise each workgroup takes one entry of the frame's tile list (render/traced_tiles.h).
+    uvec2 pixel;
+    if (RESUMABLE) {
+        pixel = uvec2(frameTileOriginX(frame), frameTileOriginY(frame)) + gl_GlobalInvocationID.xy;
+    } else {
+        uint entry = frameTileListStart(frame) + gl_WorkGroupID.y * gl_NumWorkGroups.x +
+                     gl_WorkGroupID.x;
+        if (entry >= frameTileListEnd(frame))
+            return; // the last row of workgroups runs past the range: the whole group leaves
+        pixel = tileListOrigin(entry) + gl_LocalInvocationID.xy;
+    }
     profileStart();
     uint64_t invocationStart = profileClock();
-    uvec2 pixel = uvec2(frameTileOriginX(frame), frameTileOriginY(frame)) + gl_GlobalInvocationID.xy;
     bool inside = all(lessThan(pixel, frame.image.xy));
     if (RESUMABLE) { // resume.glsl: a finished pixel waits for its tile's last dispatch
         gRecord = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * 8u) + gl_GlobalInvocationID.x;

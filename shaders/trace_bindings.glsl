@@ -106,6 +106,7 @@ layout(set = 0, binding = kBindingLightTexels) uniform samplerBuffer lightTexels
 layout(set = 0, binding = kBindingMeshGridTexels) uniform usamplerBuffer meshGridTexels;
 layout(set = 0, binding = kBindingTextureTexels) uniform usamplerBuffer textureInfoTexels;
 layout(set = 0, binding = kBindingCellTriangleTexels) uniform usamplerBuffer cellTriangleTexels;
+layout(set = 0, binding = kBindingTileList) uniform usamplerBuffer tileListTexels;
 
 layout(push_constant) uniform FrameBlock { GpuFrameParams frame; };
 
@@ -115,6 +116,11 @@ uint cellStartAt(uint i) {
 }
 uint cellPrimitiveAt(uint k) {
     return TEXEL_BUFFERS ? texelFetch(cellPrimitiveTexels, int(k)).x : cellPrimitiveArray[k];
+}
+// Entry i of the frame's tile list: the tile's first pixel.
+uvec2 tileListOrigin(uint i) {
+    uint tile = texelFetch(tileListTexels, int(i)).x;
+    return uvec2(tile & 0xFFFFu, tile >> 16u) * 8u;
 }
 // Row `row` of cell entry k's triangle (GpuCellTriangle: row 0 has the triangle's index in w).
 uvec4 cellTriangleRow(uint k, uint row) {

@@ -46,8 +46,7 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
       walkLog_(context, 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false), timestamps_(context) {
     if (features_.profile > 0 && !context.shaderClockEnabled())
         throw Error("profiling needs a Vulkan context created with the shader clock");
-    bool hasFinite = (features_.kinds & ~(1u << gpu::kKindPlane)) != 0;
-    extent_ = sceneExtent(scene, grid, hasFinite);
+    extent_ = sceneExtent(scene, grid);
     createImages(width, height);
     createPipeline();
     if (options.cullMissTiles)
@@ -85,6 +84,7 @@ std::unique_ptr<vk::ComputePipeline> RayTracer::createTracerPipeline(const Trace
 void RayTracer::bindImages(vk::ComputePipeline &pipeline) {
     pipeline.bindStorageImage(gpu::kBindingAccumImage, accum_.view());
     pipeline.bindStorageImage(gpu::kBindingAovImage, aov_.view());
+    pipeline.bindTexelBuffer(gpu::kBindingTileList, tileListView_.handle());
 }
 
 void RayTracer::resize(uint32_t width, uint32_t height) {
@@ -141,6 +141,18 @@ void RayTracer::createImages(uint32_t width, uint32_t height) {
     VkImageUsageFlags usage =
         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     accum_ = vk::Image(context_, width, height, VK_FORMAT_R32G32B32A32_SFLOAT, usage);
+    // Every tile row by row, for the full tracer: what compile()'s one-tile dispatches read.
+    TileRect tiles = imageTiles(width, height);
+    VkDeviceSize listBytes = VkDeviceSize(tiles.width()) * tiles.height() * sizeof(uint32_t);
+    tileList_ = vk::Buffer(
+        context_, listBytes,
+        VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
+    tileListView_ = vk::BufferView(context_, tileList_.handle(), VK_FORMAT_R32_UINT, listBytes);
+    runner_.run([&](VkCommandBuffer commands) {
+        recordTileList(
+            commands,
+            tileLists(std::vector<uint8_t>(size_t(tiles.width()) * tiles.height(), 1), tiles));
+    });
     // The AOV image is full size only when asked for: a scene pays for what it uses.
     bool aov = features_.writeAov;
     aov_ = vk::Image(context_, aov ? width : 1, aov ? height : 1, VK_FORMAT_R32G32B32A32_SFLOAT,
@@ -158,10 +170,11 @@ void RayTracer::recordSamples(VkCommandBuffer commands, const Camera &camera, ui
                               uint32_t count, uint32_t samplesPerPixel) {
     gpu::GpuFrameParams params = frameParams(camera, samplesPerPixel);
     // The same camera for every sample: which tiles may hit something is found once.
-    TileRect traced = tracedTiles(params);
+    TileLists lists = frameTiles(params);
+    recordTileList(commands, lists);
     for (uint32_t s = firstSample; s < firstSample + count; ++s) {
         setFrameSample(params, s);
-        recordSample(commands, params, traced);
+        recordSample(commands, params, lists);
     }
 }
 
@@ -173,28 +186,51 @@ gpu::GpuFrameParams RayTracer::frameParams(const Camera &camera, uint32_t sample
     return params;
 }
 
-TileRect RayTracer::tracedTiles(const gpu::GpuFrameParams &params) const {
-    return missPipeline_ ? tilesThatMayHit(params, extent_) : imageTiles(width_, height_);
+TileLists RayTracer::frameTiles(const gpu::GpuFrameParams &params) const {
+    TileRect image = imageTiles(width_, height_);
+    if (!missPipeline_)
+        return tileLists(std::vector<uint8_t>(size_t(image.width()) * image.height(), 1), image);
+    return tileLists(tilesThatMayHit(params, extent_), image);
+}
+
+void RayTracer::recordTileList(VkCommandBuffer commands, const TileLists &lists) {
+    // Earlier dispatches (of this or an earlier submission) have read the old list.
+    vk::memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    // vkCmdUpdateBuffer takes at most 65,536 bytes a call.
+    const size_t chunk = 65536 / sizeof(uint32_t);
+    for (size_t first = 0; first < lists.tiles.size(); first += chunk) {
+        size_t count = std::min(chunk, lists.tiles.size() - first);
+        vkCmdUpdateBuffer(commands, tileList_.handle(), first * sizeof(uint32_t),
+                          count * sizeof(uint32_t), lists.tiles.data() + first);
+    }
+    vk::memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
 }
 
 void RayTracer::recordSample(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
-                             const TileRect &traced) {
-    recordTiles(commands, *pipeline_, params, traced);
+                             const TileLists &lists) {
+    uint32_t total = uint32_t(lists.tiles.size());
+    recordTiles(commands, *pipeline_, params, 0, lists.traced);
     if (missPipeline_)
-        for (const TileRect &rest : tilesAround(traced, imageTiles(width_, height_)))
-            recordTiles(commands, *missPipeline_, params, rest);
+        recordTiles(commands, *missPipeline_, params, lists.traced, total - lists.traced);
     recordAccumulationBarrier(commands); // the tiles of one sample do not overlap
 }
 
 void RayTracer::recordTiles(VkCommandBuffer commands, const vk::ComputePipeline &pipeline,
-                            gpu::GpuFrameParams params, const TileRect &tiles) {
-    if (tiles.empty())
+                            gpu::GpuFrameParams params, uint32_t first, uint32_t count) {
+    if (count == 0)
         return;
-    params.control.z = (tiles.x0 * kTileSize) | ((tiles.y0 * kTileSize) << 16u);
+    params.control.z = first;
+    params.control.w = first + count;
+    // A row of at most 4,096 workgroups (the shader finds its entry from its place in the
+    // dispatch; workgroups past the range leave at once): maxComputeWorkGroupCount is only
+    // guaranteed to be 65,535 a dimension, and a 2048x2048 image has 65,536 tiles.
+    uint32_t groupsX = std::min(count, 4096u), groupsY = (count + groupsX - 1) / groupsX;
     pipeline.bind(commands);
     vkCmdPushConstants(commands, pipeline.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(params),
                        &params);
-    vkCmdDispatch(commands, tiles.width(), tiles.height(), 1);
+    vkCmdDispatch(commands, groupsX, groupsY, 1);
 }
 
 void RayTracer::recordDispatch(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
@@ -216,11 +252,10 @@ void RayTracer::recordAccumulationBarrier(VkCommandBuffer commands) {
 void RayTracer::compile(const Camera &camera) {
     gpu::GpuFrameParams params = frameParams(camera, 1);
     runner_.run([&](VkCommandBuffer commands) {
-        TileRect first{0, 0, 1, 1};
-        recordTiles(commands, *pipeline_, params, first);
+        recordTiles(commands, *pipeline_, params, 0, 1);
         recordAccumulationBarrier(commands);
         if (missPipeline_) { // lavapipe compiles each variant at its first dispatch
-            recordTiles(commands, *missPipeline_, params, first);
+            recordTiles(commands, *missPipeline_, params, 0, 1);
             recordAccumulationBarrier(commands);
         }
     });

@@ -104,18 +104,23 @@ private:
     // next dispatch read the accumulation it wrote.
     void recordDispatch(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
                         uint32_t groupsX, uint32_t groupsY);
-    // The tiles the full tracer must run on for `params`' camera (render/traced_tiles.h); the
-    // whole image when culling is off.
-    TileRect tracedTiles(const gpu::GpuFrameParams &params) const;
-    // One sample over the whole image: the full tracer on `traced`, the background variant on
-    // the rest.
+    // The frame's tiles for `params`' camera (render/traced_tiles.h), those the full tracer
+    // must run on first; all of them for the full tracer when culling is off.
+    TileLists frameTiles(const gpu::GpuFrameParams &params) const;
+    // Writes `lists` into the tile list inside the command buffer (so that frames in flight
+    // each read their own), ordered after earlier dispatches' reads and before later ones.
+    void recordTileList(VkCommandBuffer commands, const TileLists &lists);
+    // One sample over the whole image: the full tracer on the list's first `traced` tiles, the
+    // background variant on the rest.
     void recordSample(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
-                      const TileRect &traced);
+                      const TileLists &lists);
     // makeFrameParams with the scene's plane and light counts (the shader's loop bounds).
     gpu::GpuFrameParams frameParams(const Camera &camera, uint32_t samplesPerPixel) const;
     void recordAccumulationBarrier(VkCommandBuffer commands);
+    // One dispatch of `pipeline` over entries [first, first + count) of the tile list.
     void recordTiles(VkCommandBuffer commands, const vk::ComputePipeline &pipeline,
-                     gpu::GpuFrameParams params, const TileRect &tiles);
+                     gpu::GpuFrameParams params, uint32_t first, uint32_t count);
+    // The images and the tile list, sized to the image, and their bindings.
     void createImages(uint32_t width, uint32_t height);
     void bindImages(vk::ComputePipeline &pipeline);
     // The pipeline for features_, with every binding written.
@@ -144,6 +149,8 @@ private:
     vk::Buffer walkLog_;
     vk::Image accum_;
     vk::Image aov_;
+    vk::Buffer tileList_; // r32ui, one entry per tile of the image
+    vk::BufferView tileListView_;
     vk::TimestampQueries timestamps_;
     std::unique_ptr<vk::ComputePipeline> pipeline_;
     // The tracer compiled without geometry, for tiles that see only the background; null when

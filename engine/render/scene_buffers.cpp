@@ -160,6 +160,7 @@ std::vector<VkDescriptorType> traceDescriptorTypes() {
     types[kBindingAccumImage] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     types[kBindingAovImage] = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     types[kBindingHeader] = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    types[kBindingTileList] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     for (const ArrayBinding &a : kArrays)
         types[a.texelBinding] = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
     return types;

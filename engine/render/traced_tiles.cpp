@@ -4,66 +4,41 @@
 #include <array>
 #include <cmath>
 
+#include "accel/finite_primitives.h"
+
 namespace prism {
 namespace {
 
 // Relative margin of every sign test below: far above the float rounding of the shader's ray
-// (a few 1e-7), far below the pixel of margin round each tile (1e-3 of the image at 1024).
+// and of the scene's float copy (a few 1e-7), far below the pixel of margin round each tile
+// (1e-3 of the image at 1024).
 constexpr double kEpsilon = 1e-5;
 
+// Image-plane coordinates (x right, y up, [-1, 1] across the image) as trace.comp's cameraRay
+// has them for a sample position in pixels, and back.
+double imageX(double px, double width) {
+    return 2.0 * px / width - 1.0;
+}
+double imageY(double py, double height) {
+    return 1.0 - 2.0 * py / height;
+}
+
 struct TileSpan {
-    double x0, x1, y0, y1; // image-plane coordinates in [-1, 1], y up, with a pixel's margin
+    double x0, x1, y0, y1; // image-plane coordinates, with a pixel's margin
 };
 
 TileSpan tileSpan(uint32_t tx, uint32_t ty, double width, double height) {
     // Sample positions of the tile's pixels lie in [8 t, 8 t + 8]; one pixel more each side.
     double px0 = double(tx * kTileSize) - 1.0, px1 = double(tx * kTileSize + kTileSize) + 1.0;
     double py0 = double(ty * kTileSize) - 1.0, py1 = double(ty * kTileSize + kTileSize) + 1.0;
-    return {2.0 * px0 / width - 1.0, 2.0 * px1 / width - 1.0, 1.0 - 2.0 * py1 / height,
-            1.0 - 2.0 * py0 / height};
+    return {imageX(px0, width), imageX(px1, width), imageY(py1, height), imageY(py0, height)};
 }
 
 struct RayFrame {
     glm::dvec3 eye, forward, du, dv;
     bool parallel;
+    glm::dmat3 toImage; // p - eye -> (a, b, c) with p - eye = a du + b dv + c forward
 };
-
-std::array<glm::dvec3, 8> boxCorners(const SceneExtent &extent) {
-    // Grown by a relative margin, so that rounding in the host's own arithmetic cannot cut it.
-    glm::dvec3 pad = kEpsilon * (glm::abs(extent.boxMax - extent.boxMin) + glm::abs(extent.boxMin) +
-                                 glm::abs(extent.boxMax)) +
-                     1e-30;
-    glm::dvec3 lo = extent.boxMin - pad, hi = extent.boxMax + pad;
-    std::array<glm::dvec3, 8> corners;
-    for (int k = 0; k < 8; ++k)
-        corners[k] =
-            glm::dvec3((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
-    return corners;
-}
-
-// Perspective: the tile's rays leave the eye inside the cone of its four corner directions.
-// The box is missed when all its corners lie outside one of the cone's side planes, or behind
-// the eye (every direction is forward plus a part across it, so the cone lies ahead).
-bool coneMissesBox(const std::array<glm::dvec3, 4> &c, const std::array<glm::dvec3, 8> &corners,
-                   const glm::dvec3 &eye, const glm::dvec3 &forward) {
-    bool behind = true;
-    for (const glm::dvec3 &p : corners)
-        behind = behind && glm::dot(forward, p - eye) < 0.0;
-    if (behind)
-        return true;
-    glm::dvec3 centre = c[0] + c[1] + c[2] + c[3];
-    for (int j = 0; j < 4; ++j) {
-        glm::dvec3 n = glm::cross(c[j], c[(j + 1) % 4]);
-        if (glm::dot(n, centre) < 0.0)
-            n = -n;
-        bool allOutside = true;
-        for (const glm::dvec3 &p : corners)
-            allOutside = allOutside && glm::dot(n, p - eye) < 0.0;
-        if (allOutside)
-            return true;
-    }
-    return false;
-}
 
 // A ray o + t d (t > 0) hits the plane n.p = w where w - n.o and n.d have the same sign. The
 // tile's rays miss it where every one has them of opposite signs, clearly: the shader's
@@ -72,54 +47,22 @@ bool opposite(double g, double gScale, double s, double sScale) {
     return std::abs(g) > kEpsilon * gScale && std::abs(s) > kEpsilon * sScale && g * s < 0.0;
 }
 
-bool tileMayHit(const RayFrame &cam, const TileSpan &span, const SceneExtent &extent,
-                const std::array<glm::dvec3, 8> &corners) {
+bool tileMayHitAPlane(const RayFrame &cam, const TileSpan &span,
+                      const std::vector<glm::dvec4> &planes) {
     const double xs[2] = {span.x0, span.x1}, ys[2] = {span.y0, span.y1};
-    if (!cam.parallel) {
-        // Corner directions in order round the tile.
-        std::array<glm::dvec3, 4> c = {cam.forward + xs[0] * cam.du + ys[0] * cam.dv,
-                                       cam.forward + xs[1] * cam.du + ys[0] * cam.dv,
-                                       cam.forward + xs[1] * cam.du + ys[1] * cam.dv,
-                                       cam.forward + xs[0] * cam.du + ys[1] * cam.dv};
-        if (extent.hasBox && !coneMissesBox(c, corners, cam.eye, cam.forward))
-            return true;
-        for (const glm::dvec4 &plane : extent.planes) {
-            glm::dvec3 n(plane);
-            double g = plane.w - glm::dot(n, cam.eye);
-            double gScale = std::abs(plane.w) + glm::length(cam.eye);
-            bool missed = true;
-            for (const glm::dvec3 &d : c)
-                missed = missed && opposite(g, gScale, glm::dot(n, d), glm::length(d));
-            if (!missed)
-                return true;
-        }
-        return false;
-    }
-    // Parallel: rays leave the image plane at eye + x du + y dv along forward. A point is hit
-    // by the ray of its coordinates (a, b) in the basis (du, dv, forward), where c > 0.
-    if (extent.hasBox) {
-        glm::dmat3 toImage = glm::inverse(glm::dmat3(cam.du, cam.dv, cam.forward));
-        bool left = true, right = true, below = true, above = true, behind = true;
-        for (const glm::dvec3 &p : corners) {
-            glm::dvec3 abc = toImage * (p - cam.eye);
-            left = left && abc.x < span.x0;
-            right = right && abc.x > span.x1;
-            below = below && abc.y < span.y0;
-            above = above && abc.y > span.y1;
-            behind = behind && abc.z < 0.0;
-        }
-        if (!(left || right || below || above || behind))
-            return true;
-    }
-    for (const glm::dvec4 &plane : extent.planes) {
+    for (const glm::dvec4 &plane : planes) {
         glm::dvec3 n(plane);
-        double s = glm::dot(n, cam.forward);
         bool missed = true;
         for (double x : xs)
             for (double y : ys) {
-                glm::dvec3 o = cam.eye + x * cam.du + y * cam.dv;
-                missed = missed && opposite(plane.w - glm::dot(n, o),
-                                            std::abs(plane.w) + glm::length(o), s, 1.0);
+                glm::dvec3 o = cam.eye, d = cam.forward + x * cam.du + y * cam.dv;
+                if (cam.parallel) {
+                    o = cam.eye + x * cam.du + y * cam.dv;
+                    d = cam.forward;
+                }
+                missed =
+                    missed && opposite(plane.w - glm::dot(n, o), std::abs(plane.w) + glm::length(o),
+                                       glm::dot(n, d), glm::length(d));
             }
         if (!missed)
             return true;
@@ -127,54 +70,167 @@ bool tileMayHit(const RayFrame &cam, const TileSpan &span, const SceneExtent &ex
     return false;
 }
 
+// Where a box can be seen: the rectangle of image-plane coordinates its rays pass through.
+// Perspective rays leave the eye along forward + x du + y dv, so a point at (a, b, c) is seen at
+// (a / c, b / c) when c > 0, and the rays through a box in front of the eye cross the image
+// plane inside the hull of its corners' images. Parallel rays leave (x, y) along forward: a
+// point is seen at (a, b) when c > 0. Returns false when the box is behind the camera; `all` is
+// set when it reaches back to the eye's plane (then any ray may meet it).
+struct ImageRect {
+    double x0, x1, y0, y1;
+};
+bool boxImage(const RayFrame &cam, const Aabb &box, ImageRect &rect, bool &all) {
+    // Grown by a relative margin, so that rounding in the host's own arithmetic cannot cut it.
+    glm::dvec3 pad =
+        kEpsilon * (glm::abs(box.max - box.min) + glm::abs(box.min) + glm::abs(box.max)) + 1e-30;
+    glm::dvec3 lo = box.min - pad, hi = box.max + pad;
+    rect = {INFINITY, -INFINITY, INFINITY, -INFINITY};
+    all = false;
+    bool inFront = false, reachesBack = false;
+    for (int k = 0; k < 8; ++k) {
+        glm::dvec3 p((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+        glm::dvec3 abc = cam.toImage * (p - cam.eye);
+        inFront = inFront || abc.z > 0.0;
+        if (cam.parallel) {
+            rect = {std::min(rect.x0, abc.x), std::max(rect.x1, abc.x), std::min(rect.y0, abc.y),
+                    std::max(rect.y1, abc.y)};
+            continue;
+        }
+        // A corner near or behind the eye's plane would project far off or flipped.
+        if (abc.z <= kEpsilon * (std::abs(abc.x) + std::abs(abc.y) + std::abs(abc.z))) {
+            reachesBack = true;
+            continue;
+        }
+        double x = abc.x / abc.z, y = abc.y / abc.z;
+        rect = {std::min(rect.x0, x), std::max(rect.x1, x), std::min(rect.y0, y),
+                std::max(rect.y1, y)};
+    }
+    all = inFront && reachesBack;
+    return inFront;
+}
+
 } // namespace
 
-SceneExtent sceneExtent(const Scene &scene, const Grid &grid, bool hasFinite) {
+SceneExtent sceneExtent(const Scene &scene, const Grid &grid) {
     SceneExtent extent;
-    extent.hasBox = hasFinite;
-    extent.boxMin = glm::dvec3(grid.boundsMin);
-    extent.boxMax = glm::dvec3(grid.boundsMax);
     for (const Plane &p : scene.planes) {
         glm::dvec3 n(p.normal);
         extent.planes.push_back(glm::dvec4(n, glm::dot(n, p.point)));
     }
+    FinitePrimitives primitives(scene);
+    if (primitives.count() == 0)
+        return extent;
+    // Cubic blocks, as many along the longest side as kExtentBlocks.
+    glm::dvec3 lo(grid.boundsMin), hi(grid.boundsMax), size = hi - lo;
+    double side = std::max({size.x, size.y, size.z}) / kExtentBlocks;
+    glm::ivec3 res(1);
+    if (side > 0.0)
+        for (int a = 0; a < 3; ++a)
+            res[a] = std::clamp(int(std::ceil(size[a] / side)), 1, int(kExtentBlocks));
+    glm::dvec3 block = size / glm::dvec3(res);
+    auto blockOf = [&](const glm::dvec3 &p) {
+        glm::ivec3 b;
+        for (int a = 0; a < 3; ++a)
+            b[a] = block[a] > 0.0
+                       ? std::clamp(int(std::floor((p[a] - lo[a]) / block[a])), 0, res[a] - 1)
+                       : 0;
+        return b;
+    };
+    auto blockBox = [&](const glm::ivec3 &b) {
+        Aabb box;
+        box.min = lo + glm::dvec3(b) * block;
+        for (int a = 0; a < 3; ++a)
+            box.max[a] = b[a] + 1 == res[a] ? hi[a] : lo[a] + double(b[a] + 1) * block[a];
+        return box;
+    };
+    std::vector<uint8_t> occupied(size_t(res.x) * res.y * res.z, 0);
+    for (uint32_t id = 0; id < primitives.count(); ++id) {
+        Aabb bounds = primitives.bounds(id);
+        // Neighbouring blocks too where a bound lies on a face: the overlap test decides.
+        glm::ivec3 b0 = blockOf(bounds.min - kEpsilon * glm::abs(block)),
+                   b1 = blockOf(bounds.max + kEpsilon * glm::abs(block));
+        for (int z = b0.z; z <= b1.z; ++z)
+            for (int y = b0.y; y <= b1.y; ++y)
+                for (int x = b0.x; x <= b1.x; ++x) {
+                    size_t index = size_t(x) + size_t(res.x) * (size_t(y) + size_t(res.y) * z);
+                    if (occupied[index])
+                        continue;
+                    Aabb box = blockBox({x, y, z});
+                    bool single = b0 == b1;
+                    if (single || primitives.overlapsBox(id, box.min, box.max))
+                        occupied[index] = 1;
+                }
+    }
+    for (int z = 0; z < res.z; ++z)
+        for (int y = 0; y < res.y; ++y)
+            for (int x = 0; x < res.x; ++x)
+                if (occupied[size_t(x) + size_t(res.x) * (size_t(y) + size_t(res.y) * z)])
+                    extent.boxes.push_back(blockBox({x, y, z}));
     return extent;
 }
 
-TileRect tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent) {
+std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent) {
     uint32_t width = frame.image.x, height = frame.image.y;
     TileRect image = imageTiles(width, height);
+    uint32_t tilesX = image.x1, tilesY = image.y1;
     // The camera as the shader has it: the frame's floats.
-    RayFrame cam{glm::dvec3(frame.eye), glm::dvec3(frame.forward), glm::dvec3(frame.du),
-                 glm::dvec3(frame.dv), gpu::isParallelCamera(frame)};
-    std::array<glm::dvec3, 8> corners = boxCorners(extent);
-    TileRect rect{image.x1, image.y1, 0, 0};
-    for (uint32_t ty = 0; ty < image.y1; ++ty)
-        for (uint32_t tx = 0; tx < image.x1; ++tx) {
-            if (tx >= rect.x0 && tx < rect.x1 && ty >= rect.y0 && ty < rect.y1)
-                continue; // already inside
-            if (tileMayHit(cam, tileSpan(tx, ty, width, height), extent, corners)) {
-                rect.x0 = std::min(rect.x0, tx);
-                rect.y0 = std::min(rect.y0, ty);
-                rect.x1 = std::max(rect.x1, tx + 1);
-                rect.y1 = std::max(rect.y1, ty + 1);
-            }
+    RayFrame cam{glm::dvec3(frame.eye), glm::dvec3(frame.forward),    glm::dvec3(frame.du),
+                 glm::dvec3(frame.dv),  gpu::isParallelCamera(frame), glm::dmat3(1.0)};
+    cam.toImage = glm::inverse(glm::dmat3(cam.du, cam.dv, cam.forward));
+    // Each box marks the tiles round its image: counted in a difference array (+1 at a
+    // rectangle's corner, -1 past its ends), summed once at the end.
+    std::vector<int32_t> marks(size_t(tilesX + 1) * (tilesY + 1), 0);
+    auto at = [&](uint32_t x, uint32_t y) -> int32_t & {
+        return marks[size_t(y) * (tilesX + 1) + x];
+    };
+    for (const Aabb &box : extent.boxes) {
+        ImageRect r;
+        bool all;
+        if (!boxImage(cam, box, r, all))
+            continue;
+        if (all)
+            return std::vector<uint8_t>(size_t(tilesX) * tilesY, 1);
+        // Pixels whose sample positions may fall in the rectangle, one more each side (the
+        // tile span's margin), then their tiles.
+        double px0 = (r.x0 + 1.0) * 0.5 * width - 1.0, px1 = (r.x1 + 1.0) * 0.5 * width + 1.0;
+        double py0 = (1.0 - r.y1) * 0.5 * height - 1.0, py1 = (1.0 - r.y0) * 0.5 * height + 1.0;
+        if (px1 < 0.0 || py1 < 0.0 || px0 >= width || py0 >= height)
+            continue;
+        uint32_t x0 = uint32_t(std::max(0.0, px0)) / kTileSize;
+        uint32_t y0 = uint32_t(std::max(0.0, py0)) / kTileSize;
+        uint32_t x1 = std::min(tilesX, uint32_t(std::min(double(width), px1)) / kTileSize + 1);
+        uint32_t y1 = std::min(tilesY, uint32_t(std::min(double(height), py1)) / kTileSize + 1);
+        at(x0, y0) += 1;
+        at(x1, y0) -= 1;
+        at(x0, y1) -= 1;
+        at(x1, y1) += 1;
+    }
+    std::vector<uint8_t> mayHit(size_t(tilesX) * tilesY, 0);
+    std::vector<int32_t> column(tilesX + 1, 0); // running sums down each column
+    for (uint32_t ty = 0; ty < tilesY; ++ty) {
+        int32_t row = 0;
+        for (uint32_t tx = 0; tx < tilesX; ++tx) {
+            column[tx] += at(tx, ty);
+            row += column[tx];
+            bool hit =
+                row > 0 || (!extent.planes.empty() &&
+                            tileMayHitAPlane(cam, tileSpan(tx, ty, width, height), extent.planes));
+            mayHit[size_t(ty) * tilesX + tx] = hit ? 1 : 0;
         }
-    return rect.empty() ? TileRect{} : rect;
+    }
+    return mayHit;
 }
 
-std::vector<TileRect> tilesAround(const TileRect &traced, const TileRect &image) {
-    uint32_t tilesX = image.x1, tilesY = image.y1;
-    if (traced.empty())
-        return {image};
-    std::vector<TileRect> rest = {{0, 0, tilesX, traced.y0},
-                                  {0, traced.y1, tilesX, tilesY},
-                                  {0, traced.y0, traced.x0, traced.y1},
-                                  {traced.x1, traced.y0, tilesX, traced.y1}};
-    rest.erase(
-        std::remove_if(rest.begin(), rest.end(), [](const TileRect &r) { return r.empty(); }),
-        rest.end());
-    return rest;
+TileLists tileLists(const std::vector<uint8_t> &mayHit, const TileRect &image) {
+    TileLists lists;
+    lists.tiles.reserve(size_t(image.width()) * image.height());
+    for (uint8_t wanted : {1, 0})
+        for (uint32_t ty = 0; ty < image.y1; ++ty)
+            for (uint32_t tx = 0; tx < image.x1; ++tx)
+                if (mayHit[size_t(ty) * image.x1 + tx] == wanted)
+                    lists.tiles.push_back(packTile(tx, ty));
+    lists.traced = uint32_t(std::count(mayHit.begin(), mayHit.end(), uint8_t(1)));
+    return lists;
 }
 
 } // namespace prism

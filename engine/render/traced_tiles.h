@@ -1,15 +1,17 @@
 #pragma once
-// Which 8x8 tiles of the image the full tracer must run on. A camera ray that misses the grid's
-// box and every plane sees only the background (or the environment), and on lavapipe the tracer
-// costs nearly as much for such a ray as for one that hits: a SIMD group runs every branch of the
-// shader, masked, whatever its lanes take (docs/benchmarks.md, "Where the cycles go"). So the
-// tiles whose rays provably miss everything are traced by a variant compiled with no geometry,
-// and only the rectangle around the rest by the full tracer.
+// Which 8x8 tiles of the image the full tracer must run on. A camera ray that misses every box
+// that holds geometry and every plane sees only the background (or the environment), and on
+// lavapipe the tracer costs nearly as much for such a ray as for one that hits: a SIMD group runs
+// every branch of the shader, masked, whatever its lanes take (docs/benchmarks.md, "Where the
+// cycles go"). So the tiles whose rays provably miss everything are traced by a variant compiled
+// with no geometry, and only the rest by the full tracer, each kind of tile in one dispatch over a
+// list of tiles.
 #include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "accel/bounds.h"
 #include "accel/grid.h"
 #include "scene/scene.h"
 #include "shared/gpu_types.h"
@@ -31,25 +33,37 @@ inline TileRect imageTiles(uint32_t width, uint32_t height) {
     return {0, 0, (width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize};
 }
 
-// What a camera ray can hit, in the coordinates the tracer uses: the grid's box (it holds every
-// finite primitive) and the planes as (unit normal, offset) with n.p = offset on the plane.
+// What a camera ray can hit, in the coordinates the tracer uses: boxes that hold every finite
+// primitive between them (the occupied blocks of a coarse grid over the scene grid's box, so
+// that the tiles between the parts of an object are not traced) and the planes as (unit normal,
+// offset) with n.p = offset on the plane.
 struct SceneExtent {
-    bool hasBox = false;
-    glm::dvec3 boxMin{0.0}, boxMax{0.0};
+    std::vector<Aabb> boxes;
     std::vector<glm::dvec4> planes;
 };
 
-// `hasFinite`: the scene has spheres, triangles or instances (else the grid's box holds nothing).
-SceneExtent sceneExtent(const Scene &scene, const Grid &grid, bool hasFinite);
+// The blocks of a grid of at most kExtentBlocks per axis over `grid`'s box that some finite
+// primitive of `scene` overlaps (FinitePrimitives::overlapsBox: exact for triangles), and the
+// planes.
+constexpr uint32_t kExtentBlocks = 32;
+SceneExtent sceneExtent(const Scene &scene, const Grid &grid);
 
-// The smallest rectangle of tiles outside which every camera ray of `frame` (at any sample
-// position in its pixel) misses everything in `extent`: conservative, with a pixel's margin
-// round each tile and a relative margin on every sign test, so that no ray the tracer could see
-// hit something is left to the background.
-TileRect tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent);
+// For each tile of the image (imageTiles, row by row): 1 where a camera ray of `frame`, at any
+// sample position in the tile, may hit a box or a plane of `extent`; 0 where every one provably
+// misses them all. Conservative: a pixel's margin round each tile and a relative margin on every
+// sign test and box, so that no ray the tracer could see hit something is left to the
+// background.
+std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent);
 
-// The rest of `image`'s tiles (imageTiles) as at most four rectangles (above, below, left,
-// right of `traced`), for the variant that only sees the background.
-std::vector<TileRect> tilesAround(const TileRect &traced, const TileRect &image);
+// The tiles to dispatch, as x | y << 16 (in tiles): the first `traced` for the full tracer, the
+// rest for the variant that only sees the background. Row by row within each part.
+struct TileLists {
+    std::vector<uint32_t> tiles;
+    uint32_t traced = 0;
+};
+TileLists tileLists(const std::vector<uint8_t> &mayHit, const TileRect &image);
+inline uint32_t packTile(uint32_t x, uint32_t y) {
+    return x | (y << 16);
+}
 
 } // namespace prism

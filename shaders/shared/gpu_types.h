@@ -241,12 +241,14 @@ struct GpuStats {
 
 // Per-frame parameters (push constants, 128 bytes at most).
 struct GpuFrameParams {
-    vec4 eye;      // xyz: camera position; w: 1 for parallel projection
-    vec4 forward;  // xyz: unit view direction
-    vec4 du;       // right scaled by h*a (perspective) or (H/2)*a (ortho)
-    vec4 dv;       // true up scaled by h (perspective) or H/2 (ortho)
-    uvec4 image;   // x width, y height, z this dispatch's sample index, w samples per pixel
-    uvec4 control; // x: max depth, y: kLoopProbeRuns, z: tile origin x | y << 16, w: walk log size
+    vec4 eye;     // xyz: camera position; w: 1 for parallel projection
+    vec4 forward; // xyz: unit view direction
+    vec4 du;      // right scaled by h*a (perspective) or (H/2)*a (ortho)
+    vec4 dv;      // true up scaled by h (perspective) or H/2 (ortho)
+    uvec4 image;  // x width, y height, z this dispatch's sample index, w samples per pixel
+    // x: max depth, y: kLoopProbeRuns. Resumable tracing: z the tile origin x | y << 16, w the
+    // walk log size; otherwise z, w: the dispatch's range of the frame's tile list.
+    uvec4 control;
     // The pixel jitter's parts that are the same for every pixel of a dispatch, computed once by
     // the host (render/frame_params.h): in the shader they were integer divisions and loops,
     // which lavapipe runs lane by lane for every pixel.
@@ -281,12 +283,20 @@ PRISM_CONST(uint, kLoopProbeRuns, 2u);
 PRISM_INLINE uint frameLoopProbe(PRISM_IN(GpuFrameParams) f) {
     return f.control.y;
 }
-// The first pixel of the tile a dispatch traces (0, 0 but in resumable tracing).
+// Resumable tracing: the first pixel of the tile a dispatch traces.
 PRISM_INLINE uint frameTileOriginX(PRISM_IN(GpuFrameParams) f) {
     return f.control.z & 0xFFFFu;
 }
 PRISM_INLINE uint frameTileOriginY(PRISM_IN(GpuFrameParams) f) {
     return f.control.z >> 16u;
+}
+// Otherwise: the entries [start, end) of the tile list (kBindingTileList) that a dispatch's
+// workgroups trace, one each.
+PRISM_INLINE uint frameTileListStart(PRISM_IN(GpuFrameParams) f) {
+    return f.control.z;
+}
+PRISM_INLINE uint frameTileListEnd(PRISM_IN(GpuFrameParams) f) {
+    return f.control.w;
 }
 // Resumable tracing: walk results each pixel's log holds (resume.glsl).
 PRISM_INLINE uint frameWalkLogSize(PRISM_IN(GpuFrameParams) f) {

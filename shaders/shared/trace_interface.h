@@ -54,7 +54,10 @@ PRISM_CONST(uint, kBindingTextureTexels, 33u);  // rgba32ui, 1 per GpuTexture
 // (GpuCellTriangle), so a test reads three texels and no primitive id (CELL_TRIANGLES).
 PRISM_CONST(uint, kBindingCellTriangles, 34u);
 PRISM_CONST(uint, kBindingCellTriangleTexels, 35u); // rgba32ui, 3 per cell entry
-PRISM_CONST(uint, kTraceBindingCount, 36u);
+// The frame's tiles, x | y << 16 in tiles (render/traced_tiles.h): each dispatch but a
+// resumable one traces a range of it, a workgroup per entry.
+PRISM_CONST(uint, kBindingTileList, 36u); // r32ui
+PRISM_CONST(uint, kTraceBindingCount, 37u);
 
 // Specialization constants: features a scene does not use are compiled out.
 PRISM_CONST(uint, kSpecKinds, 0u); // bit k: the scene has primitives of kind k

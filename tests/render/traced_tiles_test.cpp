@@ -1,6 +1,7 @@
 // Tiles left to the background variant (render/traced_tiles.h): no camera ray that could hit
 // anything may fall outside the traced rectangle, the rectangle must actually shrink where the
 // scene leaves background, and culling must change no pixel, AOV or ray count.
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -17,8 +18,20 @@
 namespace prism::test {
 namespace {
 
-bool inside(const TileRect &r, uint32_t tx, uint32_t ty) {
-    return tx >= r.x0 && tx < r.x1 && ty >= r.y0 && ty < r.y1;
+bool traced(const std::vector<uint8_t> &mayHit, const gpu::GpuFrameParams &f, uint32_t tx,
+            uint32_t ty) {
+    return mayHit[size_t(ty) * imageTiles(f.image.x, f.image.y).x1 + tx] != 0;
+}
+
+double tracedShare(const std::vector<uint8_t> &mayHit) {
+    return double(std::count(mayHit.begin(), mayHit.end(), uint8_t(1))) / double(mayHit.size());
+}
+
+Aabb boxOf(glm::dvec3 lo, glm::dvec3 hi) {
+    Aabb b;
+    b.min = lo;
+    b.max = hi;
+    return b;
 }
 
 // The shader's camera ray (trace.comp, cameraRay) for a sample position, in float as there.
@@ -50,10 +63,10 @@ bool hitsPlane(glm::dvec3 o, glm::dvec3 d, glm::dvec4 plane) {
     return denom != 0.0 && (plane.w - glm::dot(glm::dvec3(plane), o)) / denom > 0.0;
 }
 
-// Every sample position that could see the box or a plane lies in a traced tile; returns the
+// Every sample position that could see a box or a plane lies in a traced tile; returns the
 // share of tiles traced.
 double checkConservative(const gpu::GpuFrameParams &frame, const SceneExtent &extent) {
-    TileRect rect = tilesThatMayHit(frame, extent);
+    std::vector<uint8_t> mayHit = tilesThatMayHit(frame, extent);
     const glm::vec2 offsets[] = {
         {0.0f, 0.0f}, {0.5f, 0.5f}, {0.9999f, 0.0f}, {0.0f, 0.9999f}, {0.9999f, 0.9999f}};
     for (uint32_t py = 0; py < frame.image.y; ++py)
@@ -61,18 +74,18 @@ double checkConservative(const gpu::GpuFrameParams &frame, const SceneExtent &ex
             for (glm::vec2 offset : offsets) {
                 glm::dvec3 o, d;
                 cameraRay(frame, glm::vec2(px, py) + offset, o, d);
-                bool mayHit = extent.hasBox && hitsBox(o, d, extent.boxMin, extent.boxMax);
+                bool mayHitHere = false;
+                for (const Aabb &box : extent.boxes)
+                    mayHitHere = mayHitHere || hitsBox(o, d, box.min, box.max);
                 for (const glm::dvec4 &plane : extent.planes)
-                    mayHit = mayHit || hitsPlane(o, d, plane);
-                if (mayHit && !inside(rect, px / kTileSize, py / kTileSize)) {
-                    ADD_FAILURE() << "pixel " << px << "," << py << " sees the scene outside the "
-                                  << "traced tiles [" << rect.x0 << "," << rect.x1 << ")x["
-                                  << rect.y0 << "," << rect.y1 << ")";
+                    mayHitHere = mayHitHere || hitsPlane(o, d, plane);
+                if (mayHitHere && !traced(mayHit, frame, px / kTileSize, py / kTileSize)) {
+                    ADD_FAILURE() << "pixel " << px << "," << py
+                                  << " sees the scene in a tile left to the background";
                     return 1.0;
                 }
             }
-    TileRect image = imageTiles(frame.image.x, frame.image.y);
-    return double(rect.width() * rect.height()) / (image.width() * image.height());
+    return tracedShare(mayHit);
 }
 
 gpu::GpuFrameParams frameFor(const Camera &camera, uint32_t width, uint32_t height) {
@@ -93,11 +106,11 @@ TEST(TracedTiles, NoRayThatMayHitIsLeftToTheBackground) {
         if (trial % 3 == 0)
             camera.orthoHeight = float(2.0 + 3.0 * (unit(rng) + 1.0));
         SceneExtent extent;
-        extent.hasBox = trial % 5 != 4;
-        glm::dvec3 centre{coord(rng), coord(rng), coord(rng)};
-        glm::dvec3 half{size(rng), size(rng), size(rng)};
-        extent.boxMin = centre - half;
-        extent.boxMax = centre + half;
+        for (int box = 0; box < (trial % 5 == 4 ? 0 : 1 + trial % 3); ++box) {
+            glm::dvec3 centre{coord(rng), coord(rng), coord(rng)};
+            glm::dvec3 half{size(rng), size(rng), size(rng)};
+            extent.boxes.push_back(boxOf(centre - half, centre + half));
+        }
         if (trial % 4 == 1) {
             glm::dvec3 n = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
             extent.planes.push_back(glm::dvec4(n, glm::dot(n, glm::dvec3(0.0, coord(rng), 0.0))));
@@ -106,19 +119,29 @@ TEST(TracedTiles, NoRayThatMayHitIsLeftToTheBackground) {
         double share = checkConservative(frameFor(camera, 61, 45), extent);
         shrunk += share < 1.0 ? 1 : 0;
     }
-    EXPECT_GT(shrunk, 50) << "the traced rectangle should rarely be the whole image here";
+    EXPECT_GT(shrunk, 50) << "the traced tiles should rarely be the whole image here";
 }
 
 TEST(TracedTiles, ASmallObjectNeedsOnlyTheTilesAroundIt) {
     Camera camera; // at (0, 0, 5) looking at the origin, 60 degrees
     SceneExtent extent;
-    extent.hasBox = true;
-    extent.boxMin = glm::dvec3(-0.3);
-    extent.boxMax = glm::dvec3(0.3);
+    extent.boxes.push_back(boxOf(glm::dvec3(-0.3), glm::dvec3(0.3)));
     gpu::GpuFrameParams frame = frameFor(camera, 256, 192);
     EXPECT_LT(checkConservative(frame, extent), 0.1);
-    TileRect rect = tilesThatMayHit(frame, extent);
-    EXPECT_TRUE(inside(rect, 16, 12)); // the centre
+    EXPECT_TRUE(traced(tilesThatMayHit(frame, extent), frame, 16, 12)); // the centre
+}
+
+// Two boxes far apart on the screen: the tiles between them are not traced (a rectangle round
+// both would have traced them).
+TEST(TracedTiles, TheGapBetweenTwoObjectsIsLeftToTheBackground) {
+    Camera camera;
+    SceneExtent extent;
+    extent.boxes.push_back(boxOf({-2.0, -0.2, -0.2}, {-1.6, 0.2, 0.2}));
+    extent.boxes.push_back(boxOf({1.6, -0.2, -0.2}, {2.0, 0.2, 0.2}));
+    gpu::GpuFrameParams frame = frameFor(camera, 256, 192);
+    std::vector<uint8_t> mayHit = tilesThatMayHit(frame, extent);
+    EXPECT_LT(checkConservative(frame, extent), 0.1);
+    EXPECT_FALSE(traced(mayHit, frame, 16, 12)); // the centre, between them
 }
 
 TEST(TracedTiles, TheSkyAboveAFloorIsLeftToTheBackground) {
@@ -131,35 +154,81 @@ TEST(TracedTiles, TheSkyAboveAFloorIsLeftToTheBackground) {
     double share = checkConservative(frame, extent);
     EXPECT_GT(share, 0.4);
     EXPECT_LT(share, 0.6);
-    TileRect rect = tilesThatMayHit(frame, extent);
-    EXPECT_EQ(rect.y1, 12u); // down to the bottom row
+    std::vector<uint8_t> mayHit = tilesThatMayHit(frame, extent);
+    for (uint32_t tx = 0; tx < 16; ++tx) {
+        EXPECT_TRUE(traced(mayHit, frame, tx, 11)) << "the bottom row";
+        EXPECT_FALSE(traced(mayHit, frame, tx, 0)) << "the top row";
+    }
 }
 
 TEST(TracedTiles, NothingBehindTheCameraIsTraced) {
     Camera camera;
     SceneExtent extent;
-    extent.hasBox = true;
-    extent.boxMin = {-1.0, -1.0, 6.0};
-    extent.boxMax = {1.0, 1.0, 8.0};
-    EXPECT_TRUE(tilesThatMayHit(frameFor(camera, 64, 48), extent).empty());
+    extent.boxes.push_back(boxOf({-1.0, -1.0, 6.0}, {1.0, 1.0, 8.0}));
+    EXPECT_EQ(tracedShare(tilesThatMayHit(frameFor(camera, 64, 48), extent)), 0.0);
     camera.orthoHeight = 4.0f;
-    EXPECT_TRUE(tilesThatMayHit(frameFor(camera, 64, 48), extent).empty());
+    EXPECT_EQ(tracedShare(tilesThatMayHit(frameFor(camera, 64, 48), extent)), 0.0);
 }
 
-TEST(TracedTiles, TheRestCoversTheImageOnce) {
-    const uint32_t tilesX = 9, tilesY = 7;
-    for (TileRect traced : {TileRect{}, TileRect{0, 0, 9, 7}, TileRect{2, 1, 5, 4},
-                            TileRect{0, 3, 9, 5}, TileRect{4, 0, 9, 7}}) {
-        std::vector<int> covered(tilesX * tilesY, 0);
-        std::vector<TileRect> all = tilesAround(traced, imageTiles(tilesX * 8 - 3, tilesY * 8));
-        all.push_back(traced);
-        for (const TileRect &r : all)
-            for (uint32_t y = r.y0; y < r.y1; ++y)
-                for (uint32_t x = r.x0; x < r.x1; ++x)
-                    covered[y * tilesX + x] += 1;
-        for (int c : covered)
-            EXPECT_EQ(c, 1);
+// A box round the eye's plane may be seen anywhere.
+TEST(TracedTiles, ABoxRoundTheEyeTracesEverything) {
+    Camera camera;
+    SceneExtent extent;
+    extent.boxes.push_back(boxOf({2.0, -1.0, 4.0}, {3.0, 1.0, 6.0}));
+    EXPECT_EQ(tracedShare(tilesThatMayHit(frameFor(camera, 64, 48), extent)), 1.0);
+}
+
+// The blocks hold every primitive: points on every triangle and sphere lie in one of them.
+TEST(TracedTiles, TheExtentsBlocksHoldEveryPrimitive) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    Scene scene = stabilityScene();
+    addTriangle(scene, {-6.0f, 0.1f, -5.0f}, {6.0f, 0.3f, -4.0f}, {0.0f, 5.0f, -6.0f}, 0);
+    Grid grid = buildGrid(scene);
+    SceneExtent extent = sceneExtent(scene, grid);
+    ASSERT_EQ(extent.planes.size(), 1u);
+    uint32_t blocks = kExtentBlocks * kExtentBlocks * kExtentBlocks;
+    EXPECT_LT(extent.boxes.size(), blocks / 4) << "mostly empty space here";
+    auto held = [&](glm::dvec3 p) {
+        for (const Aabb &b : extent.boxes)
+            if (glm::all(glm::greaterThanEqual(p, b.min)) && glm::all(glm::lessThanEqual(p, b.max)))
+                return true;
+        return false;
+    };
+    for (const Triangle &t : scene.triangles)
+        for (int k = 0; k < 200; ++k) {
+            double u = unit(rng), v = unit(rng) * (1.0 - u);
+            glm::dvec3 p = t.p[0] + u * (t.p[1] - t.p[0]) + v * (t.p[2] - t.p[0]);
+            EXPECT_TRUE(held(p)) << p.x << "," << p.y << "," << p.z;
+        }
+    for (const Sphere &s : scene.spheres)
+        for (int k = 0; k < 200; ++k) {
+            double z = 2.0 * unit(rng) - 1.0, phi = 6.283185307 * unit(rng);
+            double r = std::sqrt(1.0 - z * z);
+            glm::dvec3 p =
+                s.center + double(s.radius) * glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
+            EXPECT_TRUE(held(p)) << p.x << "," << p.y << "," << p.z;
+        }
+}
+
+TEST(TracedTiles, TheListsCoverTheImageOnceTracedFirst) {
+    TileRect image = imageTiles(9 * 8 - 3, 7 * 8);
+    std::mt19937 rng(3);
+    std::vector<uint8_t> mayHit(9 * 7);
+    for (uint8_t &m : mayHit)
+        m = uint8_t(rng() % 2);
+    TileLists lists = tileLists(mayHit, image);
+    ASSERT_EQ(lists.tiles.size(), mayHit.size());
+    std::vector<int> covered(mayHit.size(), 0);
+    for (size_t i = 0; i < lists.tiles.size(); ++i) {
+        uint32_t x = lists.tiles[i] & 0xFFFFu, y = lists.tiles[i] >> 16u;
+        ASSERT_LT(x, 9u);
+        ASSERT_LT(y, 7u);
+        covered[y * 9 + x] += 1;
+        EXPECT_EQ(mayHit[y * 9 + x], i < lists.traced ? 1 : 0);
     }
+    for (int c : covered)
+        EXPECT_EQ(c, 1);
 }
 
 class TracedTilesRender : public GpuTest {};
@@ -196,9 +265,9 @@ TEST_F(TracedTilesRender, ChangeNoPixel) {
     Scene centred = floating;
     centerOnCamera(centred);
     Grid grid = buildGrid(centred);
-    TileRect rect =
-        tilesThatMayHit(frameFor(centred.camera, 70, 50), sceneExtent(centred, grid, true));
-    EXPECT_LT(rect.width() * rect.height(), 9u * 7u);
+    EXPECT_LT(
+        tracedShare(tilesThatMayHit(frameFor(centred.camera, 70, 50), sceneExtent(centred, grid))),
+        0.9);
 }
 
 } // namespace
