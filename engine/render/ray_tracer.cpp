@@ -226,7 +226,7 @@ void RayTracer::recordTiles(VkCommandBuffer commands, const vk::ComputePipeline 
     // A row of at most 4,096 workgroups (the shader finds its entry from its place in the
     // dispatch; workgroups past the range leave at once): maxComputeWorkGroupCount is only
     // guaranteed to be 65,535 a dimension, and a 2048x2048 image has 65,536 tiles.
-    uint32_t groupsX = std::min(count, 4096u), groupsY = (count + groupsX - 1) / groupsX;
+    uint32_t groupsX = std::min(count, 65535u), groupsY = (count + groupsX - 1) / groupsX;
     pipeline.bind(commands);
     vkCmdPushConstants(commands, pipeline.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(params),
                        &params);

@@ -221,11 +221,28 @@ std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const Sce
     return mayHit;
 }
 
+std::vector<uint32_t> spreadRowOrder(uint32_t rows) {
+    uint32_t bits = 0;
+    while ((1u << bits) < rows)
+        ++bits;
+    std::vector<uint32_t> order;
+    order.reserve(rows);
+    for (uint32_t i = 0; i < (1u << bits); ++i) {
+        uint32_t reversed = 0;
+        for (uint32_t b = 0; b < bits; ++b)
+            reversed |= ((i >> b) & 1u) << (bits - 1 - b);
+        if (reversed < rows)
+            order.push_back(reversed);
+    }
+    return order;
+}
+
 TileLists tileLists(const std::vector<uint8_t> &mayHit, const TileRect &image) {
     TileLists lists;
     lists.tiles.reserve(size_t(image.width()) * image.height());
+    std::vector<uint32_t> rows = spreadRowOrder(image.y1);
     for (uint8_t wanted : {1, 0})
-        for (uint32_t ty = 0; ty < image.y1; ++ty)
+        for (uint32_t ty : rows)
             for (uint32_t tx = 0; tx < image.x1; ++tx)
                 if (mayHit[size_t(ty) * image.x1 + tx] == wanted)
                     lists.tiles.push_back(packTile(tx, ty));

@@ -56,12 +56,22 @@ SceneExtent sceneExtent(const Scene &scene, const Grid &grid);
 std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent);
 
 // The tiles to dispatch, as x | y << 16 (in tiles): the first `traced` for the full tracer, the
-// rest for the variant that only sees the background. Row by row within each part.
+// rest for the variant that only sees the background. Within each part, rows in spreadRowOrder.
+//
+// Why the order matters: lavapipe hands each of its threads one contiguous share of a
+// dispatch's workgroups (llvmpipe's lp_cs_tpool: iter_per_thread = workgroups / threads), and a
+// dispatch ends when the busiest thread does. Row by row, one thread got the top of the image
+// and the other the bottom; where the costly rows lie in one half (a sky above a floor), one
+// thread idled for much of the frame. Rows in bit-reversed order give every contiguous share
+// rows from all over the image, so the shares cost about the same for any number of threads,
+// and each row's tiles still go to one thread together.
 struct TileLists {
     std::vector<uint32_t> tiles;
     uint32_t traced = 0;
 };
 TileLists tileLists(const std::vector<uint8_t> &mayHit, const TileRect &image);
+// 0 .. rows - 1 in the order of their bit-reversed indices (0, 4, 2, 6, 1, 5, 3, 7 for 8).
+std::vector<uint32_t> spreadRowOrder(uint32_t rows);
 inline uint32_t packTile(uint32_t x, uint32_t y) {
     return x | (y << 16);
 }

@@ -211,6 +211,31 @@ TEST(TracedTiles, TheExtentsBlocksHoldEveryPrimitive) {
         }
 }
 
+// lavapipe gives each thread one contiguous share of a dispatch: every share of the row order
+// must hold rows from all over the image, for two threads and for three.
+TEST(TracedTiles, EveryShareOfTheRowOrderSpansTheImage) {
+    for (uint32_t rows : {1u, 2u, 7u, 96u, 100u, 256u}) {
+        std::vector<uint32_t> order = spreadRowOrder(rows);
+        std::vector<uint32_t> sorted = order;
+        std::sort(sorted.begin(), sorted.end());
+        for (uint32_t r = 0; r < rows; ++r)
+            ASSERT_EQ(sorted[r], r) << "a permutation of " << rows << " rows";
+        if (rows < 96)
+            continue;
+        for (uint32_t shares : {2u, 3u})
+            for (uint32_t share = 0; share < shares; ++share) {
+                // Rows of this share in each eighth of the image: about 1/shares of each.
+                std::vector<uint32_t> perEighth(8, 0);
+                for (uint32_t i = rows * share / shares; i < rows * (share + 1) / shares; ++i)
+                    perEighth[order[i] * 8 / rows] += 1;
+                for (uint32_t count : perEighth) {
+                    EXPECT_GE(count * shares * 8, rows * 2 / 3) << rows << " rows, share " << share;
+                    EXPECT_LE(count * shares * 8, rows * 3 / 2) << rows << " rows, share " << share;
+                }
+            }
+    }
+}
+
 TEST(TracedTiles, TheListsCoverTheImageOnceTracedFirst) {
     TileRect image = imageTiles(9 * 8 - 3, 7 * 8);
     std::mt19937 rng(3);
