@@ -223,10 +223,11 @@ void RayTracer::recordTiles(VkCommandBuffer commands, const vk::ComputePipeline 
         return;
     params.control.z = first;
     params.control.w = first + count;
-    // A row of at most 4,096 workgroups (the shader finds its entry from its place in the
-    // dispatch; workgroups past the range leave at once): maxComputeWorkGroupCount is only
-    // guaranteed to be 65,535 a dimension, and a 2048x2048 image has 65,536 tiles.
-    uint32_t groupsX = std::min(count, 65535u), groupsY = (count + groupsX - 1) / groupsX;
+    // Rows of at most 65,535 workgroups (maxComputeWorkGroupCount is only guaranteed to be
+    // that a dimension, and a 2048x2048 image has 65,536 tiles), as even as they can be: the
+    // shader finds its entry from its place in the dispatch, and the few workgroups past the
+    // range leave at once (on lavapipe they still run the shader, masked).
+    uint32_t groupsY = (count + 65534u) / 65535u, groupsX = (count + groupsY - 1) / groupsY;
     pipeline.bind(commands);
     vkCmdPushConstants(commands, pipeline.layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(params),
                        &params);

@@ -295,5 +295,25 @@ TEST_F(TracedTilesRender, ChangeNoPixel) {
         0.9);
 }
 
+// More tiles than one row of workgroups may hold (65,535): every pixel is still traced once.
+// The AOV image starts unwritten, so a tile left out shows as a depth that is neither a hit's
+// distance nor a miss's infinity.
+TEST_F(TracedTilesRender, ImagesOfMoreThan65535TilesAreCovered) {
+    Scene scene = stabilityScene();
+    TracerOptions options;
+    options.writeAov = true;
+    const uint32_t width = 2048, height = 2056; // 256 x 257 tiles
+    ASSERT_GT(imageTiles(width, height).width() * imageTiles(width, height).height(), 65535u);
+    GpuRender render = renderGpu(context(), scene, width, height, 1, 1, GridOptions{}, options);
+    size_t misses = 0, bad = 0;
+    for (float depth : render.image.depth) {
+        misses += std::isinf(depth) ? 1 : 0;
+        bad += (std::isinf(depth) || depth > 0.0f) ? 0 : 1;
+    }
+    EXPECT_EQ(bad, 0u);
+    EXPECT_GT(misses, 0u);
+    EXPECT_EQ(render.frame.rays.primary, uint64_t(width) * height);
+}
+
 } // namespace
 } // namespace prism::test
