@@ -26,6 +26,8 @@ layout(constant_id = kSpecAdaptiveGrid) const bool ADAPTIVE_GRID = false;
 // The grid's cells list triangles only, and cellTriangleArray holds each entry's triangle: a test
 // reads its vertices by the entry, with no primitive id (render/tracer_features.h).
 layout(constant_id = kSpecCellTriangles) const bool CELL_TRIANGLES = false;
+// Likewise for a grid of spheres only: cellSphereArray holds each entry's centre and radius.
+layout(constant_id = kSpecCellSpheres) const bool CELL_SPHERES = false;
 // The studies' stand-ins for methods Prism replaced (trace_interface.h); the defaults fold away.
 layout(constant_id = kSpecFixedRayOffset) const float FIXED_RAY_OFFSET = 0.0;
 layout(constant_id = kSpecTriangleTest) const uint TRIANGLE_TEST = kTriangleTestWatertight;
@@ -91,6 +93,9 @@ layout(std430, set = 0, binding = kBindingMeshGrids) readonly buffer MeshGridBuf
 layout(std430, set = 0, binding = kBindingCellTriangles) readonly buffer CellTriangleBuffer {
     GpuCellTriangle cellTriangleArray[];
 };
+layout(std430, set = 0, binding = kBindingCellSpheres) readonly buffer CellSphereBuffer {
+    vec4 cellSphereArray[];
+};
 layout(set = 0, binding = kBindingCellStartTexels) uniform usamplerBuffer cellStartTexels;
 layout(set = 0, binding = kBindingCellPrimitiveTexels) uniform usamplerBuffer cellPrimitiveTexels;
 layout(set = 0, binding = kBindingSphereTexels) uniform samplerBuffer sphereTexels;
@@ -107,6 +112,7 @@ layout(set = 0, binding = kBindingMeshGridTexels) uniform usamplerBuffer meshGri
 layout(set = 0, binding = kBindingTextureTexels) uniform usamplerBuffer textureInfoTexels;
 layout(set = 0, binding = kBindingCellTriangleTexels) uniform usamplerBuffer cellTriangleTexels;
 layout(set = 0, binding = kBindingTileList) uniform usamplerBuffer tileListTexels;
+layout(set = 0, binding = kBindingCellSphereTexels) uniform samplerBuffer cellSphereTexels;
 
 layout(push_constant) uniform FrameBlock { GpuFrameParams frame; };
 
@@ -128,6 +134,10 @@ uvec4 cellTriangleRow(uint k, uint row) {
         return texelFetch(cellTriangleTexels, int(3u * k + row));
     return row == 0u ? cellTriangleArray[k].p0
                      : (row == 1u ? cellTriangleArray[k].p1 : cellTriangleArray[k].p2);
+}
+// Cell entry k's sphere: xyz centre, w radius.
+vec4 cellSphereAt(uint k) {
+    return TEXEL_BUFFERS ? texelFetch(cellSphereTexels, int(k)) : cellSphereArray[k];
 }
 uint gridEntryAt(uint i) {
     return TEXEL_BUFFERS ? texelFetch(gridEntryTexels, int(i)).x : gridEntryArray[i];

@@ -98,6 +98,10 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
                         testCellTriangle(k, origin, dir, wray, hit);
                         continue;
                     }
+                    if (CELL_SPHERES) { // no id: the entry is the sphere
+                        testCellSphere(k, origin, dir, hit);
+                        continue;
+                    }
                     uint id = cellPrimitiveAt(k);
                     bool instanceNext = HAS_INSTANCES && id >= header.idEnd[kKindTriangle];
                     if (RESUMABLE && HAS_INSTANCES && progressed &&
@@ -169,6 +173,10 @@ bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
         }
     }
     TRACE_WALK_NAME(origin, dir, hit, resume);
+    // A hit's entry becomes its sphere once the walk is done (an interrupted walk keeps the
+    // entry: it goes on from there). Shadow rays need no index.
+    if (TRACE_RAY_ANY_HIT == 0 && !(RESUMABLE && resume.interrupted))
+        resolveCellHit(hit);
     if (RESUMABLE) {
         if (resume.interrupted)
             interruptSample(walk, resume, hit);

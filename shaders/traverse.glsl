@@ -48,6 +48,25 @@ void testCellTriangle(uint k, vec3 origin, vec3 dir, WatertightRay wray, inout H
                    uintBitsToFloat(cellTriangleRow(k, 2u).xyz), origin, dir, wray, hit);
 }
 
+// The sphere of cell entry k (CELL_SPHERES): one texel, no primitive id. The hit records the
+// entry, not the sphere: resolveCellHit finds the sphere once the walk is done.
+void testCellSphere(uint k, vec3 origin, vec3 dir, inout Hit hit) {
+    float t;
+    if (intersectSphere(origin, dir, cellSphereAt(k), hit.t, t)) {
+        hit.t = t;
+        hit.kind = kKindSphere;
+        hit.index = k;
+        hit.instance = kNoInstance;
+    }
+}
+
+// After a finished walk of a CELL_SPHERES grid: the sphere hit's entry becomes the sphere (a
+// sphere-only grid's ids are sphere indices, scene/primitive_ids.h).
+void resolveCellHit(inout Hit hit) {
+    if (CELL_SPHERES && hit.kind == kKindSphere)
+        hit.index = cellPrimitiveAt(hit.index);
+}
+
 // Slab test against a box; returns the parametric range inside it.
 bool clipToBox(vec3 boxMin, vec3 boxMax, vec3 origin, vec3 invDir, out float tEnter,
                out float tExit) {

@@ -111,6 +111,8 @@ const ArrayBinding kArrays[] = {
      kBindingCellPrimitiveTexels, kUintTexels},
     {&B::cellTriangles, bytesOf<&P::cellTriangles>, "grid cell triangle", kBindingCellTriangles,
      kBindingCellTriangleTexels, kUvec4Texels},
+    {&B::cellSpheres, bytesOf<&P::cellSpheres>, "grid cell sphere", kBindingCellSpheres,
+     kBindingCellSphereTexels, kVec4Texels},
     {&B::textures, bytesOf<&P::textures>, "texture", kBindingTextures, kBindingTextureTexels,
      kUvec4Texels},
     {&B::texels, bytesOf<&P::texels>, "texture texel", kBindingTexels, kBindingImageTexels,

@@ -39,6 +39,7 @@ struct SceneBuffers {
     SceneArray cellStart;
     SceneArray cellPrimitives;
     SceneArray cellTriangles;
+    SceneArray cellSpheres;
     SceneArray textures;
     SceneArray texels;
     SceneArray gridEntries;

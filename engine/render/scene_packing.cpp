@@ -76,9 +76,18 @@ void packCellTriangles(const Scene &scene, PackedScene &packed) {
     }
 }
 
+// Each cell entry's sphere, in list order. A scene with spheres only numbers them from 0.
+void packCellSpheres(const Scene &scene, PackedScene &packed) {
+    if (!scene.triangles.empty() || !scene.instances.empty())
+        throw Error("cell spheres need a scene whose grid holds spheres only");
+    packed.cellSpheres.reserve(packed.cellPrimitives.size());
+    for (uint32_t id : packed.cellPrimitives)
+        packed.cellSpheres.push_back(packed.spheres.at(id).centerRadius);
+}
+
 } // namespace
 
-PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles) {
+PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles, bool cellSpheres) {
     PackedScene packed;
     gpu::GpuSceneHeader &h = packed.header;
     h.gridMin = glm::vec4(grid.boundsMin, 0.0f);
@@ -151,6 +160,8 @@ PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles) 
     packed.cellPrimitives = grid.cellPrimitives;
     if (cellTriangles)
         packCellTriangles(scene, packed);
+    if (cellSpheres)
+        packCellSpheres(scene, packed);
     packInstances(scene, grid, firstTriangle, packed);
     packed.gridEntries = grid.entries;
     packed.cellBoxes = grid.cellBoxes;

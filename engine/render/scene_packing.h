@@ -22,8 +22,9 @@ struct PackedScene {
     std::vector<uint32_t> cellStart;
     std::vector<uint32_t> cellPrimitives;
     std::vector<gpu::GpuCellTriangle> cellTriangles; // with cellTriangles only: one per entry
-    std::vector<uint32_t> gridEntries;               // adaptive grid only
-    std::vector<glm::uvec4> cellBoxes;               // adaptive grid only
+    std::vector<glm::vec4> cellSpheres; // with cellSpheres only: each entry's centre and radius
+    std::vector<uint32_t> gridEntries;  // adaptive grid only
+    std::vector<glm::uvec4> cellBoxes;  // adaptive grid only
     std::vector<gpu::GpuInstance> instances;
     std::vector<gpu::GpuMeshGrid> meshGrids; // one per prototype
 };
@@ -33,7 +34,8 @@ struct PackedScene {
 // Positions become 32-bit floats here: give it a scene centred on the camera
 // (scene/scene_origin.h), with the grid built from that same scene.
 // With cellTriangles (a scene whose grid lists triangles only: TracerFeatures::cellTriangles)
-// each cell entry's triangle is also stored in list order.
-PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles = false);
+// each cell entry's triangle is also stored in list order; likewise with cellSpheres.
+PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles = false,
+                      bool cellSpheres = false);
 
 } // namespace prism

@@ -63,9 +63,11 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     f.fixedRayOffset = options.fixedRayOffset;
     f.mollerTrumbore = options.mollerTrumbore;
     uint32_t finiteKinds = f.kinds & ~(1u << gpu::kKindPlane);
-    f.cellTriangles = options.cellTriangles && f.texelBuffers &&
-                      finiteKinds == (1u << gpu::kKindTriangle) &&
-                      3 * uint64_t(grid.cellPrimitives.size()) <= maxTexelElements;
+    uint64_t entries = grid.cellPrimitives.size();
+    bool cells = options.cellPrimitives && f.texelBuffers;
+    f.cellTriangles =
+        cells && finiteKinds == (1u << gpu::kKindTriangle) && 3 * entries <= maxTexelElements;
+    f.cellSpheres = cells && finiteKinds == (1u << gpu::kKindSphere) && entries <= maxTexelElements;
     return f;
 }
 
@@ -73,7 +75,7 @@ TracerFeatures TracerFeatures::backgroundOnly() const {
     TracerFeatures f = *this;
     f.kinds = 0;
     f.reflection = f.transmission = f.textures = f.areaLights = f.vertexNormals = false;
-    f.surfaceMaps = f.shadows = f.adaptiveGrid = f.cellTriangles = false;
+    f.surfaceMaps = f.shadows = f.adaptiveGrid = f.cellTriangles = f.cellSpheres = false;
     return f;
 }
 
@@ -93,6 +95,7 @@ std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
             {gpu::kSpecAdaptiveGrid, adaptiveGrid},
             {gpu::kSpecHasSurfaceMaps, surfaceMaps},
             {gpu::kSpecCellTriangles, cellTriangles},
+            {gpu::kSpecCellSpheres, cellSpheres},
             {gpu::kSpecProfileWalkDetail, profile >= 2},
             {gpu::kSpecResumable, resumable},
             {gpu::kSpecResumeLaneBudget,

@@ -42,10 +42,10 @@ struct TracerOptions {
     // Tiles whose camera rays provably miss everything get a variant with no geometry
     // (render/traced_tiles.h); off only to measure what that saves (prism-bench no-cull).
     bool cullMissTiles = true;
-    // Triangle-only scenes: each cell entry's triangle stored in list order, 48 bytes an entry,
-    // so a test fetches no primitive id (GpuCellTriangle); off only to measure what that saves
-    // (prism-bench no-cell-triangles).
-    bool cellTriangles = true;
+    // Grids of one kind: each cell entry's primitive stored in list order, so a test fetches no
+    // primitive id first (triangles: GpuCellTriangle, 48 bytes an entry; spheres: centre and
+    // radius, 16 bytes); off only to measure what that saves (prism-bench no-cell-primitives).
+    bool cellPrimitives = true;
 };
 
 struct TracerFeatures {
@@ -68,6 +68,7 @@ struct TracerFeatures {
     float fixedRayOffset = 0.0f;   // TracerOptions::fixedRayOffset
     bool mollerTrumbore = false;   // TracerOptions::mollerTrumbore
     bool cellTriangles = false;    // the cell triangle array is packed and walked
+    bool cellSpheres = false;      // the cell sphere array is packed and walked
 
     bool has(uint32_t kind) const { return (kinds >> kind) & 1u; }
     // The same tracer for rays that hit nothing: no primitive kind and nothing that only a hit
@@ -80,8 +81,9 @@ struct TracerFeatures {
 TracerFeatures featuresOf(const Scene &scene);
 
 // The variant to compile: the scene's features with the caller's options applied.
-// Cell triangles are used where the scene's finite primitives are all triangles, arrays are read
-// as texels, and the array fits in maxTexelElements texels (else the cells keep their ids).
+// Cell triangles (spheres) are used where the scene's finite primitives are all triangles
+// (spheres), arrays are read as texels, and the array fits in maxTexelElements texels (else the
+// cells keep their ids).
 // Throws prism::Error for a depth outside 1..64.
 TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const TracerOptions &options,
                               uint64_t maxTexelElements = UINT64_MAX);

@@ -57,7 +57,12 @@ PRISM_CONST(uint, kBindingCellTriangleTexels, 35u); // rgba32ui, 3 per cell entr
 // The frame's tiles, x | y << 16 in tiles (render/traced_tiles.h): each dispatch but a
 // resumable one traces a range of it, a workgroup per entry.
 PRISM_CONST(uint, kBindingTileList, 36u); // r32ui
-PRISM_CONST(uint, kTraceBindingCount, 37u);
+// Sphere-only grids: each cell entry's sphere (centre, radius) in the order of the cell lists, so
+// a test reads one texel and no primitive id; the id of the nearest hit's entry is read once,
+// after the walk (CELL_SPHERES).
+PRISM_CONST(uint, kBindingCellSpheres, 37u);
+PRISM_CONST(uint, kBindingCellSphereTexels, 38u); // rgba32f, 1 per cell entry
+PRISM_CONST(uint, kTraceBindingCount, 39u);
 
 // Specialization constants: features a scene does not use are compiled out.
 PRISM_CONST(uint, kSpecKinds, 0u); // bit k: the scene has primitives of kind k
@@ -74,6 +79,7 @@ PRISM_CONST(uint, kSpecTexelBuffers, 10u);
 PRISM_CONST(uint, kSpecAdaptiveGrid, 11u);   // walk the adaptive grid's cells, not a regular DDA
 PRISM_CONST(uint, kSpecHasSurfaceMaps, 12u); // some material has a normal or bump map
 PRISM_CONST(uint, kSpecCellTriangles, 15u);  // walk the cell triangle array (binding 35)
+PRISM_CONST(uint, kSpecCellSpheres, 16u);    // walk the cell sphere array (binding 38)
 // For the studies only (docs/studies, prism-bench variants): the methods Prism replaced, so that
 // where they fail can be measured. At their defaults they fold away to Prism's own methods.
 PRISM_CONST(uint, kSpecFixedRayOffset, 13u);    // float: 0 = relative offset; > 0: fixed, in units

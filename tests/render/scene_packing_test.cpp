@@ -136,7 +136,7 @@ TEST(TracerFeatures, FollowTheScene) {
     std::map<uint32_t, uint32_t> constants;
     for (vk::SpecializationConstant c : f.specialization())
         EXPECT_TRUE(constants.emplace(c.id, c.value).second) << "constant_id " << c.id << " twice";
-    EXPECT_EQ(constants.size(), 19u); // every constant_id of shared/trace_interface.h
+    EXPECT_EQ(constants.size(), 20u); // every constant_id of shared/trace_interface.h
     EXPECT_EQ(constants.at(gpu::kSpecCellTriangles), 0u) << "the scene has spheres";
     EXPECT_EQ(constants.at(gpu::kSpecAdaptiveGrid), 0u);
     EXPECT_EQ(constants.at(gpu::kSpecResumable), 0u) << "resumable only after a cut";

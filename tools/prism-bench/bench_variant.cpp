@@ -45,8 +45,8 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.tracer.shadows = false;
         } else if (token == "no-cull") {
             v.tracer.cullMissTiles = false;
-        } else if (token == "no-cell-triangles") {
-            v.tracer.cellTriangles = false;
+        } else if (token == "no-cell-primitives") {
+            v.tracer.cellPrimitives = false;
         } else if (token == "resumable") {
             v.tracer.resumable = true;
         } else if (token == "texel" || token == "storage") {
@@ -63,7 +63,7 @@ BenchVariant parseBenchVariant(const std::string &text) {
             throw Error(
                 "variant " + text + ": unknown part '" + token +
                 "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
-                "no-reflection, no-refraction, no-shadows, no-cull, no-cell-triangles, texel, "
+                "no-reflection, no-refraction, no-shadows, no-cull, no-cell-primitives, texel, "
                 "storage, "
                 "resumable, offset=relative|E, triangle=watertight|mt, flat; join with +)");
         }

@@ -1,7 +1,7 @@
-// Cell triangles (GpuCellTriangle): in a scene whose grid lists triangles only, each cell entry's
-// triangle is stored in list order so that a test needs no primitive id. The packed entries must
-// be the listed triangles, exactly; the variant must be chosen only where it applies and fits;
-// and it must change no pixel, AOV or ray count on either grid, resumed or not.
+// Cell primitives: in a scene whose grid lists triangles only (spheres only), each cell entry's
+// triangle (sphere) is stored in list order so that a test needs no primitive id. The packed
+// entries must be the listed primitives, exactly; the variants must be chosen only where they
+// apply and fit; and they must change no pixel, AOV or ray count on either grid, resumed or not.
 #include <bit>
 #include <cstdint>
 
@@ -15,6 +15,7 @@
 #include "render/tracer_features.h"
 #include "render_helpers.h"
 #include "scene_builders.h"
+#include "test_scenes.h"
 
 namespace prism::test {
 namespace {
@@ -38,6 +39,13 @@ Scene triangleScene() {
     addSmoothOctahedron(scene, {0.9f, 0.7f, 1.2f}, 0.7f, glass);
     addSmoothOctahedron(scene, {1.8f, 0.5f, -1.0f}, 0.5f, red);
     addOctahedron(scene, {0.2f, 0.6f, -1.6f}, 0.6f, blue);
+    return scene;
+}
+
+// The stability scene without its octahedron: spheres (mirror, glass, diffuse) on a floor.
+Scene sphereScene() {
+    Scene scene = stabilityScene();
+    scene.triangles.clear();
     return scene;
 }
 
@@ -76,7 +84,7 @@ TEST(CellTriangles, ChosenOnlyWhereTheCellsListTrianglesAndTheyFit) {
     EXPECT_FALSE(chooseFeatures(scene, grid, options, texels - 1).cellTriangles) << "too big";
     EXPECT_FALSE(chooseFeatures(scene, grid, options).backgroundOnly().cellTriangles);
     TracerOptions off = options;
-    off.cellTriangles = false;
+    off.cellPrimitives = false;
     EXPECT_FALSE(chooseFeatures(scene, grid, off).cellTriangles);
     TracerOptions storage = options;
     storage.texelBuffers = false;
@@ -88,6 +96,42 @@ TEST(CellTriangles, ChosenOnlyWhereTheCellsListTrianglesAndTheyFit) {
     withInstance.prototypes.push_back(MeshPrototype{"copy", scene.triangles});
     withInstance.instances.push_back(Instance{});
     EXPECT_FALSE(chooseFeatures(withInstance, grid, options).cellTriangles);
+}
+
+TEST(CellSpheres, AreTheListedSpheresInListOrder) {
+    Scene scene = sphereScene();
+    for (const GridOptions &options : {parseGridOption("6"), parseGridOption("adaptive")}) {
+        Grid grid = buildGrid(scene, options);
+        PackedScene packed = packScene(scene, grid, false, true);
+        ASSERT_EQ(packed.cellSpheres.size(), grid.cellPrimitives.size());
+        ASSERT_GE(packed.cellSpheres.size(), scene.spheres.size());
+        for (size_t k = 0; k < packed.cellSpheres.size(); ++k)
+            EXPECT_EQ(packed.cellSpheres[k], packed.spheres[grid.cellPrimitives[k]].centerRadius);
+        EXPECT_TRUE(packScene(scene, grid).cellSpheres.empty());
+    }
+    EXPECT_GT(
+        packScene(scene, buildGrid(scene, parseGridOption("6")), false, true).cellSpheres.size(),
+        scene.spheres.size())
+        << "some listed twice";
+    EXPECT_THROW(packScene(stabilityScene(), buildGrid(stabilityScene()), false, true), Error);
+}
+
+TEST(CellSpheres, ChosenOnlyWhereTheCellsListSpheresAndTheyFit) {
+    Scene scene = sphereScene();
+    Grid grid = buildGrid(scene);
+    TracerOptions options;
+    TracerFeatures f = chooseFeatures(scene, grid, options);
+    EXPECT_TRUE(f.cellSpheres);
+    EXPECT_FALSE(f.cellTriangles);
+    uint64_t entries = grid.cellPrimitives.size();
+    EXPECT_TRUE(chooseFeatures(scene, grid, options, entries).cellSpheres);
+    EXPECT_FALSE(chooseFeatures(scene, grid, options, entries - 1).cellSpheres) << "too big";
+    EXPECT_FALSE(f.backgroundOnly().cellSpheres);
+    TracerOptions off = options;
+    off.cellPrimitives = false;
+    EXPECT_FALSE(chooseFeatures(scene, grid, off).cellSpheres);
+    TracerFeatures mixed = chooseFeatures(stabilityScene(), buildGrid(stabilityScene()), options);
+    EXPECT_FALSE(mixed.cellSpheres || mixed.cellTriangles) << "spheres and triangles";
 }
 
 class CellTrianglesRender : public GpuTest {};
@@ -108,7 +152,40 @@ TEST_F(CellTrianglesRender, ChangeNoPixel) {
         SCOPED_TRACE(c.grid);
         TracerOptions withCells = c.options, withIds = c.options;
         withCells.writeAov = withIds.writeAov = true;
-        withIds.cellTriangles = false;
+        withIds.cellPrimitives = false;
+        GridOptions grid = parseGridOption(c.grid);
+        GpuRender cells = renderGpu(context(), scene, 64, 48, 2, c.depth, grid, withCells);
+        GpuRender ids = renderGpu(context(), scene, 64, 48, 2, c.depth, grid, withIds);
+        expectSameFrame(cells, ids);
+        EXPECT_GT(cells.frame.rays.secondary, 0u);
+        EXPECT_EQ(cells.frame.resumeDispatches, ids.frame.resumeDispatches);
+        if (c.options.resumable) { // more dispatches than one per tile and sample: interrupted
+            ResumePlan plan = planResume(64, 48, c.depth, 1, true, resumed.resumeMemoryBytes);
+            uint32_t tiles = ((64 + plan.tileWidth - 1) / plan.tileWidth) *
+                             ((48 + plan.tileHeight - 1) / plan.tileHeight);
+            EXPECT_GT(cells.frame.resumeDispatches, 2 * tiles);
+        }
+    }
+}
+
+class CellSpheresRender : public GpuTest {};
+
+TEST_F(CellSpheresRender, ChangeNoPixel) {
+    Scene scene = sphereScene();
+    TracerOptions resumed;
+    resumed.resumable = true;
+    resumed.resumeLaneBudget = 120; // interrupts walks everywhere
+    resumed.resumeMemoryBytes = 20 << 10;
+    struct Case {
+        const char *grid;
+        TracerOptions options;
+        uint32_t depth;
+    };
+    for (const Case &c : {Case{"adaptive", {}, 4}, Case{"6", {}, 4}, Case{"6", resumed, 2}}) {
+        SCOPED_TRACE(c.grid);
+        TracerOptions withCells = c.options, withIds = c.options;
+        withCells.writeAov = withIds.writeAov = true;
+        withIds.cellPrimitives = false;
         GridOptions grid = parseGridOption(c.grid);
         GpuRender cells = renderGpu(context(), scene, 64, 48, 2, c.depth, grid, withCells);
         GpuRender ids = renderGpu(context(), scene, 64, 48, 2, c.depth, grid, withIds);
