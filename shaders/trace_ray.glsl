@@ -13,10 +13,7 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
         for (uint i = 0u; i < framePlaneCount(frame); ++i) {
             float t;
             if (intersectPlane(origin, dir, planeEquation(i), hit.t, t)) {
-                hit.t = t;
-                hit.kind = kKindPlane;
-                hit.index = i;
-                hit.instance = kNoInstance;
+                recordHit(hit, t, kKindPlane, i);
 #if TRACE_RAY_ANY_HIT
                 return true;
 #endif

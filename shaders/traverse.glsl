@@ -12,6 +12,14 @@ struct Hit {
 };
 const uint kNoInstance = 0xFFFFFFFFu;
 
+// A hit nearer than hit.t becomes the hit (an instance's walk then marks its triangles).
+void recordHit(inout Hit hit, float t, uint kind, uint index) {
+    hit.t = t;
+    hit.kind = kind;
+    hit.index = index;
+    hit.instance = kNoInstance;
+}
+
 #include "resume.glsl"
 
 // Tests triangle `tri` (of the triangle array), whose vertices are p0, p1, p2, and records it in
@@ -26,11 +34,8 @@ bool testTriangleAt(uint tri, vec3 p0, vec3 p1, vec3 p2, vec3 origin, vec3 dir,
     else
         hitTriangle = intersectTriangle(origin, wray, p0, p1, p2, hit.t, t, b12);
     if (hitTriangle) {
-        hit.t = t;
-        hit.kind = kKindTriangle;
-        hit.index = tri;
+        recordHit(hit, t, kKindTriangle, tri);
         hit.b12 = b12;
-        hit.instance = kNoInstance;
     }
     return hitTriangle;
 }
@@ -52,12 +57,8 @@ void testCellTriangle(uint k, vec3 origin, vec3 dir, WatertightRay wray, inout H
 // entry, not the sphere: resolveCellHit finds the sphere once the walk is done.
 void testCellSphere(uint k, vec3 origin, vec3 dir, inout Hit hit) {
     float t;
-    if (intersectSphere(origin, dir, cellSphereAt(k), hit.t, t)) {
-        hit.t = t;
-        hit.kind = kKindSphere;
-        hit.index = k;
-        hit.instance = kNoInstance;
-    }
+    if (intersectSphere(origin, dir, cellSphereAt(k), hit.t, t))
+        recordHit(hit, t, kKindSphere, k);
 }
 
 // After a finished walk of a CELL_SPHERES grid: the sphere hit's entry becomes the sphere (a
@@ -168,12 +169,8 @@ void testPrimitive(uint id, vec3 origin, vec3 dir, WatertightRay wray, bool anyH
     float t;
     if (HAS_SPHERES && id < header.idEnd[kKindSphere]) {
         uint sphere = id; // the first kind: its ids start at 0
-        if (intersectSphere(origin, dir, sphereCenterRadius(sphere), hit.t, t)) {
-            hit.t = t;
-            hit.kind = kKindSphere;
-            hit.index = sphere;
-            hit.instance = kNoInstance;
-        }
+        if (intersectSphere(origin, dir, sphereCenterRadius(sphere), hit.t, t))
+            recordHit(hit, t, kKindSphere, sphere);
     } else if (HAS_TRIANGLES && (!HAS_INSTANCES || id < header.idEnd[kKindTriangle])) {
         // primitiveIdFirst(header.idEnd, kKindTriangle), written with a constant index: lavapipe
         // then loads one word, not the whole idEnd vector, per test (that cost 7% on objects).
