@@ -88,9 +88,6 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
 #else
                 for (uint k = first; k < end; ++k) {
 #endif
-                    // Not enough left for this test (an instance's walk needs the reserve):
-                    // go on from here next time. A resumed walk always makes its first test,
-                    // so that a replay that spent most of the budget cannot stall the sample.
                     if (CELL_TRIANGLES) { // no id: the entry is the triangle
                         testCellTriangle(k, origin, dir, wray, hit);
                         continue;
@@ -99,6 +96,9 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
                         testCellSphere(k, origin, dir, hit);
                         continue;
                     }
+                    // Not enough left for this test (an instance's walk needs the reserve):
+                    // go on from here next time. A resumed walk always makes its first test,
+                    // so that a replay that spent most of the budget cannot stall the sample.
                     uint id = cellPrimitiveAt(k);
                     bool instanceNext = HAS_INSTANCES && id >= header.idEnd[kKindTriangle];
                     if (RESUMABLE && HAS_INSTANCES && progressed &&

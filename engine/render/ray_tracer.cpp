@@ -149,11 +149,7 @@ void RayTracer::createImages(uint32_t width, uint32_t height) {
         context_, listBytes,
         VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
     tileListView_ = vk::BufferView(context_, tileList_.handle(), VK_FORMAT_R32_UINT, listBytes);
-    runner_.run([&](VkCommandBuffer commands) {
-        recordTileList(
-            commands,
-            tileLists(std::vector<uint8_t>(size_t(tiles.width()) * tiles.height(), 1), tiles));
-    });
+    runner_.run([&](VkCommandBuffer commands) { recordTileList(commands, allTiles(tiles)); });
     // The AOV image is full size only when asked for: a scene pays for what it uses.
     bool aov = features_.writeAov;
     aov_ = vk::Image(context_, aov ? width : 1, aov ? height : 1, VK_FORMAT_R32G32B32A32_SFLOAT,
@@ -190,7 +186,7 @@ gpu::GpuFrameParams RayTracer::frameParams(const Camera &camera, uint32_t sample
 TileLists RayTracer::frameTiles(const gpu::GpuFrameParams &params) const {
     TileRect image = imageTiles(width_, height_);
     if (!missPipeline_)
-        return tileLists(std::vector<uint8_t>(size_t(image.width()) * image.height(), 1), image);
+        return allTiles(image);
     return tileLists(tilesThatMayHit(params, extent_), image);
 }
 

@@ -250,4 +250,8 @@ TileLists tileLists(const std::vector<uint8_t> &mayHit, const TileRect &image) {
     return lists;
 }
 
+TileLists allTiles(const TileRect &image) {
+    return tileLists(std::vector<uint8_t>(size_t(image.width()) * image.height(), 1), image);
+}
+
 } // namespace prism

@@ -70,6 +70,8 @@ struct TileLists {
     uint32_t traced = 0;
 };
 TileLists tileLists(const std::vector<uint8_t> &mayHit, const TileRect &image);
+// Every tile of `image` for the full tracer (culling off).
+TileLists allTiles(const TileRect &image);
 // 0 .. rows - 1 in the order of their bit-reversed indices (0, 4, 2, 6, 1, 5, 3, 7 for 8).
 std::vector<uint32_t> spreadRowOrder(uint32_t rows);
 inline uint32_t packTile(uint32_t x, uint32_t y) {

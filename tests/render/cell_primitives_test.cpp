@@ -4,6 +4,7 @@
 // apply and fit; and they must change no pixel, AOV or ray count on either grid, resumed or not.
 #include <bit>
 #include <cstdint>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -134,13 +135,13 @@ TEST(CellSpheres, ChosenOnlyWhereTheCellsListSpheresAndTheyFit) {
     EXPECT_FALSE(mixed.cellSpheres || mixed.cellTriangles) << "spheres and triangles";
 }
 
-class CellTrianglesRender : public GpuTest {};
-
-TEST_F(CellTrianglesRender, ChangeNoPixel) {
-    Scene scene = triangleScene();
+// With and without cell primitives: the same frame on an adaptive and a regular grid (depth 4),
+// and resumed on `resumedGrid` with a lane budget small enough to interrupt walks everywhere.
+void expectCellPrimitivesChangeNoPixel(vk::Context &context, const Scene &scene,
+                                       const char *resumedGrid, uint32_t resumeBudget) {
     TracerOptions resumed;
     resumed.resumable = true;
-    resumed.resumeLaneBudget = 300; // interrupts walks everywhere
+    resumed.resumeLaneBudget = resumeBudget;
     resumed.resumeMemoryBytes = 20 << 10;
     struct Case {
         const char *grid;
@@ -148,14 +149,14 @@ TEST_F(CellTrianglesRender, ChangeNoPixel) {
         uint32_t depth;
     };
     for (const Case &c :
-         {Case{"adaptive", {}, 4}, Case{"6", {}, 4}, Case{"adaptive", resumed, 2}}) {
-        SCOPED_TRACE(c.grid);
+         {Case{"adaptive", {}, 4}, Case{"6", {}, 4}, Case{resumedGrid, resumed, 2}}) {
+        SCOPED_TRACE(std::string(c.grid) + (c.options.resumable ? ", resumed" : ""));
         TracerOptions withCells = c.options, withIds = c.options;
         withCells.writeAov = withIds.writeAov = true;
         withIds.cellPrimitives = false;
         GridOptions grid = parseGridOption(c.grid);
-        GpuRender cells = renderGpu(context(), scene, 64, 48, 2, c.depth, grid, withCells);
-        GpuRender ids = renderGpu(context(), scene, 64, 48, 2, c.depth, grid, withIds);
+        GpuRender cells = renderGpu(context, scene, 64, 48, 2, c.depth, grid, withCells);
+        GpuRender ids = renderGpu(context, scene, 64, 48, 2, c.depth, grid, withIds);
         expectSameFrame(cells, ids);
         EXPECT_GT(cells.frame.rays.secondary, 0u);
         EXPECT_EQ(cells.frame.resumeDispatches, ids.frame.resumeDispatches);
@@ -168,37 +169,14 @@ TEST_F(CellTrianglesRender, ChangeNoPixel) {
     }
 }
 
-class CellSpheresRender : public GpuTest {};
+class CellPrimitivesRender : public GpuTest {};
 
-TEST_F(CellSpheresRender, ChangeNoPixel) {
-    Scene scene = sphereScene();
-    TracerOptions resumed;
-    resumed.resumable = true;
-    resumed.resumeLaneBudget = 120; // interrupts walks everywhere
-    resumed.resumeMemoryBytes = 20 << 10;
-    struct Case {
-        const char *grid;
-        TracerOptions options;
-        uint32_t depth;
-    };
-    for (const Case &c : {Case{"adaptive", {}, 4}, Case{"6", {}, 4}, Case{"6", resumed, 2}}) {
-        SCOPED_TRACE(c.grid);
-        TracerOptions withCells = c.options, withIds = c.options;
-        withCells.writeAov = withIds.writeAov = true;
-        withIds.cellPrimitives = false;
-        GridOptions grid = parseGridOption(c.grid);
-        GpuRender cells = renderGpu(context(), scene, 64, 48, 2, c.depth, grid, withCells);
-        GpuRender ids = renderGpu(context(), scene, 64, 48, 2, c.depth, grid, withIds);
-        expectSameFrame(cells, ids);
-        EXPECT_GT(cells.frame.rays.secondary, 0u);
-        EXPECT_EQ(cells.frame.resumeDispatches, ids.frame.resumeDispatches);
-        if (c.options.resumable) { // more dispatches than one per tile and sample: interrupted
-            ResumePlan plan = planResume(64, 48, c.depth, 1, true, resumed.resumeMemoryBytes);
-            uint32_t tiles = ((64 + plan.tileWidth - 1) / plan.tileWidth) *
-                             ((48 + plan.tileHeight - 1) / plan.tileHeight);
-            EXPECT_GT(cells.frame.resumeDispatches, 2 * tiles);
-        }
-    }
+TEST_F(CellPrimitivesRender, TrianglesChangeNoPixel) {
+    expectCellPrimitivesChangeNoPixel(context(), triangleScene(), "adaptive", 300);
+}
+
+TEST_F(CellPrimitivesRender, SpheresChangeNoPixel) {
+    expectCellPrimitivesChangeNoPixel(context(), sphereScene(), "6", 120);
 }
 
 } // namespace
