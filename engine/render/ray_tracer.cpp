@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 
 #include "core/error.h"
 #include "core/timer.h"
 #include "render/frame_params.h"
+#include "render/plane_shadows.h"
 #include "shaders/trace.comp.spv.h"
 #include "shaders/trace_background.comp.spv.h"
 #include "shaders/trace_profile.comp.spv.h"
@@ -52,6 +54,29 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     createPipeline();
     if (options.cullMissTiles)
         missPipeline_ = createTracerPipeline(features_.backgroundOnly(), true);
+    if (options.cullMissTiles && options.cullPlaneTiles && planeTilesApply(scene)) {
+        std::optional<std::vector<Aabb>> shadows =
+            features_.shadows ? planeShadowBoxes(extent_.boxes, extent_.planes, scene.lights)
+                              : std::vector<Aabb>{};
+        if (shadows) {
+            planeShadows_ = std::move(*shadows);
+            planesPipeline_ = createTracerPipeline(features_.planesOnly(), false);
+        }
+    }
+}
+
+bool RayTracer::planeTilesApply(const Scene &scene) const {
+    // Resumable tracing dispatches tile by tile, with one pipeline.
+    if (features_.resumable || extent_.boxes.empty() || extent_.planes.empty())
+        return false;
+    // The variant has no grid for any ray: a plane hit must start no secondary ray.
+    if (features_.maxDepth == 1 || (!features_.reflection && !features_.transmission))
+        return true;
+    return std::all_of(scene.planes.begin(), scene.planes.end(), [&](const Plane &p) {
+        const Material &m = scene.materials[p.material];
+        return !(features_.reflection && m.reflect > 0.0f) &&
+               !(features_.transmission && m.transmit > 0.0f);
+    });
 }
 
 void RayTracer::createPipeline() {
@@ -94,6 +119,8 @@ void RayTracer::resize(uint32_t width, uint32_t height) {
     bindImages(*pipeline_);
     if (missPipeline_)
         bindImages(*missPipeline_);
+    if (planesPipeline_)
+        bindImages(*planesPipeline_);
     if (resumePlan_.tileWidth != 0) // tiles and logs are planned for the image size
         startResuming();
 }
@@ -168,6 +195,8 @@ void RayTracer::recordSamples(VkCommandBuffer commands, const Camera &camera, ui
     gpu::GpuFrameParams params = frameParams(camera, samplesPerPixel);
     // The same camera for every sample: which tiles may hit something is found once.
     TileLists lists = frameTiles(params);
+    lastTiles_ = {lists.full, lists.traced - lists.full,
+                  uint32_t(lists.tiles.size()) - lists.traced};
     recordTileList(commands, lists);
     for (uint32_t s = firstSample; s < firstSample + count; ++s) {
         setFrameSample(params, s);
@@ -187,6 +216,8 @@ TileLists RayTracer::frameTiles(const gpu::GpuFrameParams &params) const {
     TileRect image = imageTiles(width_, height_);
     if (!missPipeline_)
         return allTiles(image);
+    if (planesPipeline_)
+        return tileLists(tileClasses(params, extent_, planeShadows_), image);
     return tileLists(tilesThatMayHit(params, extent_), image);
 }
 
@@ -208,7 +239,9 @@ void RayTracer::recordTileList(VkCommandBuffer commands, const TileLists &lists)
 void RayTracer::recordSample(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
                              const TileLists &lists) {
     uint32_t total = uint32_t(lists.tiles.size());
-    recordTiles(commands, *pipeline_, params, 0, lists.traced);
+    recordTiles(commands, *pipeline_, params, 0, lists.full);
+    if (lists.traced > lists.full) // only where planesPipeline_ exists
+        recordTiles(commands, *planesPipeline_, params, lists.full, lists.traced - lists.full);
     if (missPipeline_)
         recordTiles(commands, *missPipeline_, params, lists.traced, total - lists.traced);
     recordAccumulationBarrier(commands); // the tiles of one sample do not overlap
@@ -252,7 +285,12 @@ void RayTracer::compile(const Camera &camera) {
     runner_.run([&](VkCommandBuffer commands) {
         recordTiles(commands, *pipeline_, params, 0, 1);
         recordAccumulationBarrier(commands);
-        if (missPipeline_) { // lavapipe compiles each variant at its first dispatch
+        // lavapipe compiles each variant at its first dispatch
+        if (planesPipeline_) {
+            recordTiles(commands, *planesPipeline_, params, 0, 1);
+            recordAccumulationBarrier(commands);
+        }
+        if (missPipeline_) {
             recordTiles(commands, *missPipeline_, params, 0, 1);
             recordAccumulationBarrier(commands);
         }
@@ -290,6 +328,7 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
     result.rays = counted.rays;
     result.loopCutPixels = counted.loopCutPixels;
     result.phaseNs = counted.phaseNs;
+    result.tiles = lastTiles_;
     if (result.loopCutPixels > 0) {
         FrameResult resumed = renderResumable(camera, samplesPerPixel, progress); // switches
         resumed.gpuMs += result.gpuMs; // the frame's time includes the pass that was cut

@@ -32,6 +32,9 @@ struct FrameResult {
     // With TracerOptions::profile: nanoseconds per phase (shared/profile_phases.h), summed over
     // the frame's subgroups; zero otherwise.
     std::array<uint64_t, gpu::kProfileSlots> phaseNs{};
+    // The image's tiles by the tracer that ran them (render/traced_tiles.h, tileClasses): the
+    // full tracer, the one for planes only, the background's. Resumable frames: all full.
+    std::array<uint32_t, 3> tiles{};
 };
 
 struct TracedImage {
@@ -110,8 +113,8 @@ private:
     // Writes `lists` into the tile list inside the command buffer (so that frames in flight
     // each read their own), ordered after earlier dispatches' reads and before later ones.
     void recordTileList(VkCommandBuffer commands, const TileLists &lists);
-    // One sample over the whole image: the full tracer on the list's first `traced` tiles, the
-    // background variant on the rest.
+    // One sample over the whole image: the full tracer on the list's first `full` tiles, the
+    // tracer of planes only up to `traced`, the background variant on the rest.
     void recordSample(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
                       const TileLists &lists);
     // makeFrameParams with the scene's plane and light counts (the shader's loop bounds).
@@ -123,6 +126,9 @@ private:
     // The images and the tile list, sized to the image, and their bindings.
     void createImages(uint32_t width, uint32_t height);
     void bindImages(vk::ComputePipeline &pipeline);
+    // Whether tiles that see only planes may get the tracer without a grid: the scene has
+    // planes and grid geometry, and a plane hit starts no secondary ray at this depth.
+    bool planeTilesApply(const Scene &scene) const;
     // The pipeline for features_, with every binding written.
     void createPipeline();
     // `backgroundOnly`: the module compiled with PRISM_BACKGROUND_ONLY (render/traced_tiles.h).
@@ -156,7 +162,12 @@ private:
     // The tracer compiled without geometry, for tiles that see only the background; null when
     // TracerOptions::cullMissTiles is off.
     std::unique_ptr<vk::ComputePipeline> missPipeline_;
+    // The tracer without the grid, for tiles that see only planes out of the grid's shadows
+    // (tileClasses); null where TracerOptions::cullPlaneTiles is off or planeTilesApply is not.
+    std::unique_ptr<vk::ComputePipeline> planesPipeline_;
     SceneExtent extent_;
+    std::vector<Aabb> planeShadows_;      // planeShadowBoxes, where planesPipeline_ exists
+    std::array<uint32_t, 3> lastTiles_{}; // FrameResult::tiles of the last recordSamples
 };
 
 } // namespace prism

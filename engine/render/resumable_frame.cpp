@@ -109,6 +109,8 @@ FrameResult RayTracer::renderResumable(const Camera &camera, uint32_t samplesPer
     FrameResult counted = decodeCounters(stats_.mapped());
     result.rays = counted.rays;
     result.loopCutPixels = counted.loopCutPixels;
+    TileRect image = imageTiles(width_, height_);
+    result.tiles = {image.width() * image.height(), 0u, 0u};
     return result;
 }
 

@@ -169,21 +169,29 @@ SceneExtent sceneExtent(const Scene &scene, const Grid &grid) {
     return extent;
 }
 
-std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent) {
-    uint32_t width = frame.image.x, height = frame.image.y;
-    TileRect image = imageTiles(width, height);
-    uint32_t tilesX = image.x1, tilesY = image.y1;
+namespace {
+
+RayFrame rayFrame(const gpu::GpuFrameParams &frame) {
     // The camera as the shader has it: the frame's floats.
     RayFrame cam{glm::dvec3(frame.eye), glm::dvec3(frame.forward),    glm::dvec3(frame.du),
                  glm::dvec3(frame.dv),  gpu::isParallelCamera(frame), glm::dmat3(1.0)};
     cam.toImage = glm::inverse(glm::dmat3(cam.du, cam.dv, cam.forward));
+    return cam;
+}
+
+// For each tile: 1 where a camera ray may pass through one of the boxes.
+std::vector<uint8_t> tilesSeeingBoxes(const gpu::GpuFrameParams &frame, const RayFrame &cam,
+                                      const std::vector<Aabb> &boxes) {
+    uint32_t width = frame.image.x, height = frame.image.y;
+    TileRect image = imageTiles(width, height);
+    uint32_t tilesX = image.x1, tilesY = image.y1;
     // Each box marks the tiles round its image: counted in a difference array (+1 at a
     // rectangle's corner, -1 past its ends), summed once at the end.
     std::vector<int32_t> marks(size_t(tilesX + 1) * (tilesY + 1), 0);
     auto at = [&](uint32_t x, uint32_t y) -> int32_t & {
         return marks[size_t(y) * (tilesX + 1) + x];
     };
-    for (const Aabb &box : extent.boxes) {
+    for (const Aabb &box : boxes) {
         ImageRect r;
         bool all;
         if (!boxImage(cam, box, r, all))
@@ -205,20 +213,54 @@ std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const Sce
         at(x0, y1) -= 1;
         at(x1, y1) += 1;
     }
-    std::vector<uint8_t> mayHit(size_t(tilesX) * tilesY, 0);
+    std::vector<uint8_t> seen(size_t(tilesX) * tilesY, 0);
     std::vector<int32_t> column(tilesX + 1, 0); // running sums down each column
     for (uint32_t ty = 0; ty < tilesY; ++ty) {
         int32_t row = 0;
         for (uint32_t tx = 0; tx < tilesX; ++tx) {
             column[tx] += at(tx, ty);
             row += column[tx];
-            bool hit =
-                row > 0 || (!extent.planes.empty() &&
-                            tileMayHitAPlane(cam, tileSpan(tx, ty, width, height), extent.planes));
-            mayHit[size_t(ty) * tilesX + tx] = hit ? 1 : 0;
+            seen[size_t(ty) * tilesX + tx] = row > 0 ? 1 : 0;
         }
     }
+    return seen;
+}
+
+bool tileSeesAPlane(const gpu::GpuFrameParams &frame, const RayFrame &cam,
+                    const std::vector<glm::dvec4> &planes, uint32_t tx, uint32_t ty) {
+    return !planes.empty() &&
+           tileMayHitAPlane(cam, tileSpan(tx, ty, frame.image.x, frame.image.y), planes);
+}
+
+} // namespace
+
+std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent) {
+    RayFrame cam = rayFrame(frame);
+    std::vector<uint8_t> mayHit = tilesSeeingBoxes(frame, cam, extent.boxes);
+    uint32_t tilesX = imageTiles(frame.image.x, frame.image.y).x1;
+    for (size_t i = 0; i < mayHit.size(); ++i)
+        mayHit[i] = mayHit[i] || tileSeesAPlane(frame, cam, extent.planes, uint32_t(i % tilesX),
+                                                uint32_t(i / tilesX));
     return mayHit;
+}
+
+std::vector<uint8_t> tileClasses(const gpu::GpuFrameParams &frame, const SceneExtent &extent,
+                                 const std::vector<Aabb> &planeShadows) {
+    RayFrame cam = rayFrame(frame);
+    std::vector<uint8_t> classes = tilesSeeingBoxes(frame, cam, extent.boxes);
+    std::vector<uint8_t> shadowed = tilesSeeingBoxes(frame, cam, planeShadows);
+    uint32_t tilesX = imageTiles(frame.image.x, frame.image.y).x1;
+    for (size_t i = 0; i < classes.size(); ++i) {
+        if (classes[i]) {
+            classes[i] = kTileFull;
+        } else if (tileSeesAPlane(frame, cam, extent.planes, uint32_t(i % tilesX),
+                                  uint32_t(i / tilesX))) {
+            classes[i] = shadowed[i] ? kTileFull : kTilePlanesOnly;
+        } else {
+            classes[i] = kTileBackground;
+        }
+    }
+    return classes;
 }
 
 std::vector<uint32_t> spreadRowOrder(uint32_t rows) {
@@ -237,21 +279,24 @@ std::vector<uint32_t> spreadRowOrder(uint32_t rows) {
     return order;
 }
 
-TileLists tileLists(const std::vector<uint8_t> &mayHit, const TileRect &image) {
+TileLists tileLists(const std::vector<uint8_t> &classes, const TileRect &image) {
     TileLists lists;
     lists.tiles.reserve(size_t(image.width()) * image.height());
     std::vector<uint32_t> rows = spreadRowOrder(image.y1);
-    for (uint8_t wanted : {1, 0})
+    for (uint8_t wanted : {kTileFull, kTilePlanesOnly, kTileBackground})
         for (uint32_t ty : rows)
             for (uint32_t tx = 0; tx < image.x1; ++tx)
-                if (mayHit[size_t(ty) * image.x1 + tx] == wanted)
+                if (classes[size_t(ty) * image.x1 + tx] == wanted)
                     lists.tiles.push_back(packTile(tx, ty));
-    lists.traced = uint32_t(std::count(mayHit.begin(), mayHit.end(), uint8_t(1)));
+    lists.full = uint32_t(std::count(classes.begin(), classes.end(), kTileFull));
+    lists.traced =
+        lists.full + uint32_t(std::count(classes.begin(), classes.end(), kTilePlanesOnly));
     return lists;
 }
 
 TileLists allTiles(const TileRect &image) {
-    return tileLists(std::vector<uint8_t>(size_t(image.width()) * image.height(), 1), image);
+    return tileLists(std::vector<uint8_t>(size_t(image.width()) * image.height(), kTileFull),
+                     image);
 }
 
 } // namespace prism

@@ -5,7 +5,8 @@
 // every branch of the shader, masked, whatever its lanes take (docs/benchmarks.md, "Where the
 // cycles go"). So the tiles whose rays provably miss everything are traced by a variant compiled
 // with no geometry, and only the rest by the full tracer, each kind of tile in one dispatch over a
-// list of tiles.
+// list of tiles. Tiles whose rays see only planes, out of every shadow the grid's geometry casts
+// on them, get a third variant, without the grid (render/plane_shadows.h, tileClasses).
 #include <cstdint>
 #include <vector>
 
@@ -55,8 +56,22 @@ SceneExtent sceneExtent(const Scene &scene, const Grid &grid);
 // background.
 std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent);
 
-// The tiles to dispatch, as x | y << 16 (in tiles): the first `traced` for the full tracer, the
-// rest for the variant that only sees the background. Within each part, rows in spreadRowOrder.
+// Which tracer a tile gets. Full: some camera ray may hit a box, or a plane where a shadow ray
+// may reach a box. Planes only: the rays may hit planes, and no shadow ray from those hits can
+// reach the grid (render/plane_shadows.h), so the tile needs no grid at all, provided nothing
+// there starts a secondary ray (the caller's condition). Background: the rays miss everything.
+// A list of tilesThatMayHit flags reads as classes too (1: full).
+constexpr uint8_t kTileBackground = 0, kTileFull = 1, kTilePlanesOnly = 2;
+
+// For each tile (imageTiles, row by row): its class, by the boxes and planes of `extent` and the
+// boxes round the planes' shadow regions (planeShadowBoxes), with the margins of
+// tilesThatMayHit.
+std::vector<uint8_t> tileClasses(const gpu::GpuFrameParams &frame, const SceneExtent &extent,
+                                 const std::vector<Aabb> &planeShadows);
+
+// The tiles to dispatch, as x | y << 16 (in tiles), by class (tileClasses): the first `full` for
+// the full tracer, then up to `traced` for the tracer of planes only, the rest for the variant
+// that only sees the background. Within each part, rows in spreadRowOrder.
 //
 // Why the order matters: lavapipe hands each of its threads one contiguous share of a
 // dispatch's workgroups (llvmpipe's lp_cs_tpool: iter_per_thread = workgroups / threads), and a
@@ -67,9 +82,10 @@ std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const Sce
 // and each row's tiles still go to one thread together.
 struct TileLists {
     std::vector<uint32_t> tiles;
+    uint32_t full = 0;
     uint32_t traced = 0;
 };
-TileLists tileLists(const std::vector<uint8_t> &mayHit, const TileRect &image);
+TileLists tileLists(const std::vector<uint8_t> &classes, const TileRect &image);
 // Every tile of `image` for the full tracer (culling off).
 TileLists allTiles(const TileRect &image);
 // 0 .. rows - 1 in the order of their bit-reversed indices (0, 4, 2, 6, 1, 5, 3, 7 for 8).

@@ -79,6 +79,14 @@ TracerFeatures TracerFeatures::backgroundOnly() const {
     return f;
 }
 
+TracerFeatures TracerFeatures::planesOnly() const {
+    TracerFeatures f = *this;
+    f.kinds &= 1u << gpu::kKindPlane;
+    f.reflection = f.transmission = f.vertexNormals = false;
+    f.adaptiveGrid = f.cellTriangles = f.cellSpheres = false;
+    return f;
+}
+
 std::vector<vk::SpecializationConstant> TracerFeatures::specialization() const {
     uint32_t stackSize = std::max(1u, 2u * maxDepth - 1u); // see pushRay in trace.comp
     return {{gpu::kSpecKinds, kinds},

@@ -42,6 +42,10 @@ struct TracerOptions {
     // Tiles whose camera rays provably miss everything get a variant with no geometry
     // (render/traced_tiles.h); off only to measure what that saves (prism-bench no-cull).
     bool cullMissTiles = true;
+    // Tiles whose camera rays can hit only planes, and whose shadow rays cannot reach the grid,
+    // get a variant with no grid (render/plane_shadows.h), where nothing there starts a
+    // secondary ray; off only to measure what that saves (prism-bench no-plane-tiles).
+    bool cullPlaneTiles = true;
     // Grids of one kind: each cell entry's primitive stored in list order, so a test fetches no
     // primitive id first (triangles: GpuCellTriangle, 48 bytes an entry; spheres: centre and
     // radius, 16 bytes); off only to measure what that saves (prism-bench no-cell-primitives).
@@ -74,6 +78,9 @@ struct TracerFeatures {
     // The same tracer for rays that hit nothing: no primitive kind and nothing that only a hit
     // uses; misses still see the environment, and AOVs are still written.
     TracerFeatures backgroundOnly() const;
+    // The same tracer for tiles whose rays meet only planes and start no secondary rays: no
+    // grid, no finite kind, no reflection or refraction (render/traced_tiles.h, tileClasses).
+    TracerFeatures planesOnly() const;
     std::vector<vk::SpecializationConstant> specialization() const;
 };
 

@@ -9,6 +9,7 @@
 
 #include "gpu_fixture.h"
 #include "render/frame_params.h"
+#include "render/plane_shadows.h"
 #include "render/traced_tiles.h"
 #include "render_helpers.h"
 #include "scene/scene_origin.h"
@@ -236,24 +237,144 @@ TEST(TracedTiles, EveryShareOfTheRowOrderSpansTheImage) {
     }
 }
 
-TEST(TracedTiles, TheListsCoverTheImageOnceTracedFirst) {
+TEST(TracedTiles, TheListsCoverTheImageOnceByClass) {
     TileRect image = imageTiles(9 * 8 - 3, 7 * 8);
     std::mt19937 rng(3);
-    std::vector<uint8_t> mayHit(9 * 7);
-    for (uint8_t &m : mayHit)
-        m = uint8_t(rng() % 2);
-    TileLists lists = tileLists(mayHit, image);
-    ASSERT_EQ(lists.tiles.size(), mayHit.size());
-    std::vector<int> covered(mayHit.size(), 0);
+    std::vector<uint8_t> classes(9 * 7);
+    for (uint8_t &c : classes)
+        c = uint8_t(rng() % 3);
+    TileLists lists = tileLists(classes, image);
+    ASSERT_EQ(lists.tiles.size(), classes.size());
+    EXPECT_GT(lists.full, 0u);
+    EXPECT_GT(lists.traced, lists.full);
+    EXPECT_LT(lists.traced, classes.size());
+    std::vector<int> covered(classes.size(), 0);
     for (size_t i = 0; i < lists.tiles.size(); ++i) {
         uint32_t x = lists.tiles[i] & 0xFFFFu, y = lists.tiles[i] >> 16u;
         ASSERT_LT(x, 9u);
         ASSERT_LT(y, 7u);
         covered[y * 9 + x] += 1;
-        EXPECT_EQ(mayHit[y * 9 + x], i < lists.traced ? 1 : 0);
+        uint8_t expected = i < lists.full     ? kTileFull
+                           : i < lists.traced ? kTilePlanesOnly
+                                              : kTileBackground;
+        EXPECT_EQ(classes[y * 9 + x], expected);
     }
     for (int c : covered)
         EXPECT_EQ(c, 1);
+}
+
+// The tile that sees world point p (perspective frames).
+uint8_t classAt(const std::vector<uint8_t> &classes, const gpu::GpuFrameParams &f, glm::dvec3 p) {
+    glm::dvec3 abc =
+        glm::inverse(glm::dmat3(glm::dvec3(f.du), glm::dvec3(f.dv), glm::dvec3(f.forward))) *
+        (p - glm::dvec3(f.eye));
+    double px = (abc.x / abc.z + 1.0) * 0.5 * f.image.x,
+           py = (1.0 - abc.y / abc.z) * 0.5 * f.image.y;
+    EXPECT_TRUE(abc.z > 0.0 && px >= 0.0 && py >= 0.0 && px < f.image.x && py < f.image.y);
+    uint32_t tx = uint32_t(px) / kTileSize, ty = uint32_t(py) / kTileSize;
+    return classes[size_t(ty) * imageTiles(f.image.x, f.image.y).x1 + tx];
+}
+
+// A box on a floor, lit from one side: the box's tiles and the tiles of its shadow need the
+// grid; the floor elsewhere needs only the planes; the sky needs nothing.
+TEST(TracedTiles, TilesSeeingOnlyTheFloorOutsideTheShadowNeedNoGrid) {
+    Camera camera;
+    camera.eye = {0.0, 3.0, 8.0};
+    camera.look = {0.0, 0.5, 0.0};
+    camera.fovDegrees = 50.0f;
+    SceneExtent extent;
+    extent.boxes.push_back(boxOf({-0.5, 0.0, -0.5}, {0.5, 1.0, 0.5}));
+    extent.planes.push_back(glm::dvec4(0.0, 1.0, 0.0, 0.0));
+    Light light;
+    light.position = {-4.0, 4.0, 0.0};
+    std::optional<std::vector<Aabb>> shadows =
+        planeShadowBoxes(extent.boxes, extent.planes, {light});
+    ASSERT_TRUE(shadows.has_value());
+    gpu::GpuFrameParams frame = frameFor(camera, 256, 192);
+    std::vector<uint8_t> classes = tileClasses(frame, extent, *shadows);
+    EXPECT_EQ(classAt(classes, frame, {0.0, 0.5, 0.5}), kTileFull);        // the box
+    EXPECT_EQ(classAt(classes, frame, {1.8, 0.0, 0.3}), kTileFull);        // its shadow
+    EXPECT_EQ(classAt(classes, frame, {-3.0, 0.0, 3.0}), kTilePlanesOnly); // the floor
+    EXPECT_EQ(classAt(classes, frame, {2.5, 0.0, 3.5}), kTilePlanesOnly);
+    EXPECT_EQ(classAt(classes, frame, {-2.5, 0.0, -2.0}), kTilePlanesOnly); // towards the light
+    EXPECT_EQ(classAt(classes, frame, {0.0, 5.0, -40.0}), kTileBackground); // the sky
+    // The same with no shadow boxes (no shadows traced): the shadow's tiles need no grid.
+    std::vector<uint8_t> unshadowed = tileClasses(frame, extent, {});
+    EXPECT_EQ(classAt(unshadowed, frame, {1.8, 0.0, 0.3}), kTilePlanesOnly);
+    EXPECT_EQ(classAt(unshadowed, frame, {0.0, 0.5, 0.5}), kTileFull);
+}
+
+bool segmentMeetsSphere(glm::dvec3 o, glm::dvec3 a, const Sphere &s) {
+    glm::dvec3 d = a - o, oc = o - s.center;
+    double qa = glm::dot(d, d), qb = glm::dot(oc, d), qc = glm::dot(oc, oc) - s.radius * s.radius;
+    double disc = qb * qb - qa * qc;
+    if (disc < 0.0)
+        return false;
+    double root = std::sqrt(disc), t0 = (-qb - root) / qa, t1 = (-qb + root) / qa;
+    return t1 > 0.0 && t0 < 1.0;
+}
+
+// End to end, with real geometry: in every tile left without the grid, no camera ray meets a
+// sphere, and no shadow ray from its floor hits (from any point of a spherical light, leaving
+// from the offset origin as the shader does) meets one either.
+TEST(TracedTiles, NoRayOfATileWithoutTheGridMeetsTheGridsGeometry) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), zeroOne(0.0, 1.0);
+    size_t planeTiles = 0, tiles = 0, shadowRays = 0;
+    for (int trial = 0; trial < 12; ++trial) {
+        Scene scene = sceneWithDefaultMaterial();
+        scene.planes.push_back(Plane{{0.0, 0.0, 0.0}, {0.0f, 1.0f, 0.0f}, 0});
+        for (int i = 0; i < 6; ++i) {
+            double r = 0.15 + 0.4 * zeroOne(rng);
+            scene.spheres.push_back(
+                Sphere{{3.0 * unit(rng), r + 1.2 * zeroOne(rng), 3.0 * unit(rng)}, float(r), 0});
+        }
+        scene.lights.push_back(Light{{6.0 * unit(rng), 5.0 + 2.0 * zeroOne(rng), 6.0 * unit(rng)},
+                                     {1.0f, 1.0f, 1.0f},
+                                     trial % 2 == 0 ? 0.0f : 0.7f});
+        scene.camera.eye = {7.0 * unit(rng), 2.0 + 4.0 * zeroOne(rng), 9.0};
+        scene.camera.look = {unit(rng), 0.5, unit(rng)};
+        scene.camera.fovDegrees = 60.0f;
+        Grid grid = buildGrid(scene);
+        SceneExtent extent = sceneExtent(scene, grid);
+        std::optional<std::vector<Aabb>> shadows =
+            planeShadowBoxes(extent.boxes, extent.planes, scene.lights);
+        ASSERT_TRUE(shadows.has_value());
+        gpu::GpuFrameParams frame = frameFor(scene.camera, 96, 72);
+        std::vector<uint8_t> classes = tileClasses(frame, extent, *shadows);
+        uint32_t tilesX = imageTiles(96, 72).x1;
+        const Light &light = scene.lights[0];
+        for (uint32_t py = 0; py < 72; ++py)
+            for (uint32_t px = 0; px < 96; ++px) {
+                if (classes[size_t(py / kTileSize) * tilesX + px / kTileSize] != kTilePlanesOnly)
+                    continue;
+                glm::dvec3 o, d;
+                cameraRay(frame, glm::vec2(px, py) + glm::vec2(zeroOne(rng), zeroOne(rng)), o, d);
+                for (const Sphere &s : scene.spheres)
+                    ASSERT_FALSE(segmentMeetsSphere(o, o + 1e4 * d, s)) << "trial " << trial;
+                if (d.y >= 0.0)
+                    continue;
+                glm::dvec3 hit = o + d * (-o.y / d.y);
+                double e = PRISM_OFFSET_RELATIVE *
+                           std::max({std::abs(hit.x), std::abs(hit.y), std::abs(hit.z)});
+                glm::dvec3 origin = hit + glm::dvec3(0.0, e, 0.0);
+                for (int k = 0; k < 4; ++k) {
+                    glm::dvec3 u =
+                        glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)) + 1e-9);
+                    glm::dvec3 target = light.position + double(light.radius) * u;
+                    ++shadowRays;
+                    for (const Sphere &s : scene.spheres)
+                        ASSERT_FALSE(segmentMeetsSphere(origin, target, s))
+                            << "trial " << trial << ": pixel " << px << "," << py
+                            << " was left without the grid, but its shadow ray meets a sphere";
+                }
+            }
+        planeTiles += size_t(std::count(classes.begin(), classes.end(), kTilePlanesOnly));
+        tiles += classes.size();
+    }
+    // Not vacuous: a good share of the tiles went without the grid, and were checked.
+    EXPECT_GT(double(planeTiles) / double(tiles), 0.2);
+    EXPECT_GT(shadowRays, size_t(20000));
 }
 
 class TracedTilesRender : public GpuTest {};
@@ -315,6 +436,39 @@ TEST_F(TracedTilesRender, ImagesOfMoreThan65535TilesAreCovered) {
     EXPECT_EQ(bad, 0u);
     EXPECT_GT(misses, 0u);
     EXPECT_EQ(render.frame.rays.primary, uint64_t(width) * height);
+}
+
+// Tiles traced without the grid change no pixel, AOV or ray count: at depth 1 under a reflective
+// floor (no secondary rays), at depth 3 under a matte one, with a soft shadow, two lights and a
+// parallel camera. Under a reflective floor at depth 3 a plane hit starts a reflected ray that
+// may meet the grid, so no tile goes without it there.
+TEST_F(TracedTilesRender, TilesWithoutTheGridChangeNoPixel) {
+    Scene shiny = stabilityScene(); // the floor reflects
+    Scene matte = shiny;
+    matte.materials[matte.planes[0].material].reflect = 0.0f;
+    Scene soft = matte;
+    soft.lights[0].radius = 0.5f;
+    Scene twoLights = matte;
+    twoLights.lights.push_back(Light{{-5.0, 4.0, 2.0}, {0.5f, 0.5f, 0.5f}, 0.0f});
+    Scene parallel = matte;
+    parallel.camera.orthoHeight = 6.0f;
+    struct Case {
+        const Scene *scene;
+        uint32_t depth;
+        bool planeTiles;
+    };
+    for (Case c : {Case{&shiny, 1, true}, Case{&shiny, 3, false}, Case{&matte, 3, true},
+                   Case{&soft, 2, true}, Case{&twoLights, 2, true}, Case{&parallel, 2, true}}) {
+        TracerOptions with, without;
+        with.writeAov = without.writeAov = true;
+        without.cullPlaneTiles = false;
+        GpuRender a = renderGpu(context(), *c.scene, 96, 72, 2, c.depth, GridOptions{}, with);
+        GpuRender b = renderGpu(context(), *c.scene, 96, 72, 2, c.depth, GridOptions{}, without);
+        expectSameFrame(a, b);
+        EXPECT_EQ(a.frame.tiles[1] > 0, c.planeTiles) << "depth " << c.depth;
+        EXPECT_EQ(b.frame.tiles[1], 0u);
+        EXPECT_EQ(a.frame.tiles[0] + a.frame.tiles[1] + a.frame.tiles[2], 12u * 9u);
+    }
 }
 
 } // namespace

@@ -45,6 +45,8 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.tracer.shadows = false;
         } else if (token == "no-cull") {
             v.tracer.cullMissTiles = false;
+        } else if (token == "no-plane-tiles") {
+            v.tracer.cullPlaneTiles = false;
         } else if (token == "no-cell-primitives") {
             v.tracer.cellPrimitives = false;
         } else if (token == "resumable") {
@@ -60,12 +62,12 @@ BenchVariant parseBenchVariant(const std::string &text) {
         } else if (token == "triangle=watertight" || token == "triangle=mt") {
             v.tracer.mollerTrumbore = token == "triangle=mt";
         } else {
-            throw Error(
-                "variant " + text + ": unknown part '" + token +
-                "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
-                "no-reflection, no-refraction, no-shadows, no-cull, no-cell-primitives, texel, "
-                "storage, "
-                "resumable, offset=relative|E, triangle=watertight|mt, flat; join with +)");
+            throw Error("variant " + text + ": unknown part '" + token +
+                        "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
+                        "no-reflection, no-refraction, no-shadows, no-cull, no-plane-tiles, "
+                        "no-cell-primitives, texel, "
+                        "storage, "
+                        "resumable, offset=relative|E, triangle=watertight|mt, flat; join with +)");
         }
     }
     return v;

@@ -1,6 +1,7 @@
 #include "render_run.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <vector>
 
@@ -38,6 +39,7 @@ struct RenderOutcome {
     std::vector<double> frameMs;         // timed frames only (after warm-up)
     RayCounts rays;                      // of one frame
     uint32_t resumeDispatches = 0;       // of the last frame, when traced resumably
+    std::array<uint32_t, 3> tiles{};     // of the last frame: FrameResult::tiles
     std::vector<ArrayBytes> sceneArrays; // the scene on the device (Vulkan only)
     std::string device;
     VulkanPhases phases;
@@ -77,6 +79,7 @@ RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const G
                                                 [&](double f) { progress.update(label, f); });
         // renderFrame traces a frame that overran lavapipe's loop limit again, resumably.
         out.resumeDispatches = result.resumeDispatches;
+        out.tiles = result.tiles;
         if (frame > 0)
             out.frameMs.push_back(result.gpuMs);
         out.rays = result.rays;
@@ -213,6 +216,10 @@ void runRender(const RenderOptions &o) {
               {"secondary", out.rays.secondary}}},
             {"mrays_per_s", mraysPerSecond},
             {"resume_dispatches", out.resumeDispatches}};
+        if (o.backend == Backend::Vulkan) // which tracer ran each 8x8 tile (render/traced_tiles.h)
+            stats["tiles"] = {{"full", out.tiles[0]},
+                              {"planes_only", out.tiles[1]},
+                              {"background", out.tiles[2]}};
         // Instances: the triangles stored (the scene's and each prototype's once) against the
         // triangles the placements draw.
         uint64_t placedTriangles = 0;

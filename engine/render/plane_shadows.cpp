@@ -1,0 +1,86 @@
+#include "render/plane_shadows.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "shared/gpu_types.h"
+
+namespace prism {
+namespace {
+
+// Relative margin, as in traced_tiles.cpp: far above float rounding (a few 1e-7), far below
+// anything that would cost a tile.
+constexpr double kEpsilon = 1e-5;
+
+double maxAbs(const glm::dvec3 &v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+// The shadow region of `box` from `light` on plane (n, w), boxed; false when it has no bound.
+bool shadowBox(const Aabb &box, const glm::dvec4 &plane, const Light &light, Aabb &out) {
+    glm::dvec3 n(plane), L = light.position;
+    double nn = glm::dot(n, n);
+    double hL = glm::dot(n, L) - plane.w;
+    double scale = std::max({maxAbs(box.min), maxAbs(box.max), maxAbs(L), std::abs(plane.w)});
+    if (!(std::abs(hL) > kEpsilon * scale * std::sqrt(nn)))
+        return false; // the light on (or nearly on) the plane
+    // The box grown by the light's radius and a margin for rounding.
+    glm::dvec3 grow(double(light.radius) * (1.0 + kEpsilon) + kEpsilon * scale);
+    glm::dvec3 lo = box.min - grow, hi = box.max + grow;
+    glm::dvec3 foot = L - n * (hL / nn);
+    out = Aabb{};
+    double reach = 0.0; // the farthest projected corner from the foot
+    for (int k = 0; k < 8; ++k) {
+        glm::dvec3 c((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+        double hc = glm::dot(n, c) - plane.w;
+        // The corner must lie clearly nearer the plane than the light, on the light's side.
+        double below = hL > 0.0 ? hL - hc : hc - hL;
+        if (!(below > kEpsilon * (std::abs(hL) + std::abs(hc))))
+            return false;
+        glm::dvec3 q = L + (c - L) * (hL / (hL - hc));
+        if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
+            return false;
+        out.grow(q);
+        reach = std::max(reach, glm::length(q - foot));
+    }
+    // The ray's offset e lifts its origin off the plane, which shrinks the region towards the
+    // foot by e / h(L): at most e * reach / h(L), with e at most the offset of the farthest
+    // point of the region or the foot. The projection magnifies rounding by as much: the
+    // relative margin times the same factor.
+    double magnify = 1.0 + reach * std::sqrt(nn) / std::abs(hL);
+    double farthest = std::max({maxAbs(out.min), maxAbs(out.max), maxAbs(foot)});
+    double pad =
+        (kEpsilon * std::max(farthest, scale) + PRISM_OFFSET_RELATIVE * farthest) * magnify;
+    out.min -= pad;
+    out.max += pad;
+    return std::isfinite(pad);
+}
+
+} // namespace
+
+std::optional<std::vector<Aabb>> planeShadowBoxes(const std::vector<Aabb> &boxes,
+                                                  const std::vector<glm::dvec4> &planes,
+                                                  const std::vector<Light> &lights) {
+    std::vector<Aabb> casters = boxes;
+    if (casters.size() * planes.size() * lights.size() > kMaxPlaneShadowBoxes) {
+        Aabb all;
+        for (const Aabb &b : boxes)
+            all.grow(b);
+        casters.assign(1, all);
+    }
+    std::vector<Aabb> shadows;
+    if (casters.empty())
+        return shadows;
+    shadows.reserve(casters.size() * planes.size() * lights.size());
+    for (const Light &light : lights)
+        for (const glm::dvec4 &plane : planes)
+            for (const Aabb &box : casters) {
+                Aabb shadow;
+                if (!shadowBox(box, plane, light, shadow))
+                    return std::nullopt;
+                shadows.push_back(shadow);
+            }
+    return shadows;
+}
+
+} // namespace prism
