@@ -58,11 +58,18 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
         std::optional<std::vector<Aabb>> shadows =
             features_.shadows ? planeShadowBoxes(extent_.boxes, extent_.planes, scene.lights)
                               : std::vector<Aabb>{};
-        if (shadows) {
+        planeTiles_ = shadows.has_value();
+        if (shadows)
             planeShadows_ = std::move(*shadows);
-            planesPipeline_ = createTracerPipeline(features_.planesOnly(), false);
-        }
     }
+}
+
+vk::ComputePipeline &RayTracer::planesPipeline() {
+    // Made when a view first has such tiles: many scenes' views have none (shadows over every
+    // plane tile, a camera inside a box of walls), and the pipeline costs tens of milliseconds.
+    if (!planesPipeline_)
+        planesPipeline_ = createTracerPipeline(features_.planesOnly(), false);
+    return *planesPipeline_;
 }
 
 bool RayTracer::planeTilesApply(const Scene &scene) const {
@@ -216,7 +223,7 @@ TileLists RayTracer::frameTiles(const gpu::GpuFrameParams &params) const {
     TileRect image = imageTiles(width_, height_);
     if (!missPipeline_)
         return allTiles(image);
-    if (planesPipeline_)
+    if (planeTiles_)
         return tileLists(tileClasses(params, extent_, planeShadows_), image);
     return tileLists(tilesThatMayHit(params, extent_), image);
 }
@@ -240,8 +247,8 @@ void RayTracer::recordSample(VkCommandBuffer commands, const gpu::GpuFrameParams
                              const TileLists &lists) {
     uint32_t total = uint32_t(lists.tiles.size());
     recordTiles(commands, *pipeline_, params, 0, lists.full);
-    if (lists.traced > lists.full) // only where planesPipeline_ exists
-        recordTiles(commands, *planesPipeline_, params, lists.full, lists.traced - lists.full);
+    if (lists.traced > lists.full) // only where planeTiles_
+        recordTiles(commands, planesPipeline(), params, lists.full, lists.traced - lists.full);
     if (missPipeline_)
         recordTiles(commands, *missPipeline_, params, lists.traced, total - lists.traced);
     recordAccumulationBarrier(commands); // the tiles of one sample do not overlap
@@ -282,12 +289,14 @@ void RayTracer::recordAccumulationBarrier(VkCommandBuffer commands) {
 
 void RayTracer::compile(const Camera &camera) {
     gpu::GpuFrameParams params = frameParams(camera, 1);
+    TileLists lists = frameTiles(params);
     runner_.run([&](VkCommandBuffer commands) {
         recordTiles(commands, *pipeline_, params, 0, 1);
         recordAccumulationBarrier(commands);
-        // lavapipe compiles each variant at its first dispatch
-        if (planesPipeline_) {
-            recordTiles(commands, *planesPipeline_, params, 0, 1);
+        // lavapipe compiles each variant at its first dispatch (the tracer of planes only where
+        // this view has tiles for it).
+        if (lists.traced > lists.full) {
+            recordTiles(commands, planesPipeline(), params, 0, 1);
             recordAccumulationBarrier(commands);
         }
         if (missPipeline_) {

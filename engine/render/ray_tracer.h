@@ -129,6 +129,7 @@ private:
     // Whether tiles that see only planes may get the tracer without a grid: the scene has
     // planes and grid geometry, and a plane hit starts no secondary ray at this depth.
     bool planeTilesApply(const Scene &scene) const;
+    vk::ComputePipeline &planesPipeline();
     // The pipeline for features_, with every binding written.
     void createPipeline();
     // `backgroundOnly`: the module compiled with PRISM_BACKGROUND_ONLY (render/traced_tiles.h).
@@ -163,10 +164,13 @@ private:
     // TracerOptions::cullMissTiles is off.
     std::unique_ptr<vk::ComputePipeline> missPipeline_;
     // The tracer without the grid, for tiles that see only planes out of the grid's shadows
-    // (tileClasses); null where TracerOptions::cullPlaneTiles is off or planeTilesApply is not.
+    // (tileClasses), where planeTiles_: made by planesPipeline() when a view first has some.
     std::unique_ptr<vk::ComputePipeline> planesPipeline_;
     SceneExtent extent_;
-    std::vector<Aabb> planeShadows_;      // planeShadowBoxes, where planesPipeline_ exists
+    // Whether tiles are classed with planes only (TracerOptions::cullPlaneTiles,
+    // planeTilesApply, and the shadows have a bound), and the shadow boxes they are classed by.
+    bool planeTiles_ = false;
+    std::vector<Aabb> planeShadows_;
     std::array<uint32_t, 3> lastTiles_{}; // FrameResult::tiles of the last recordSamples
 };
 
