@@ -68,6 +68,7 @@ vec3 placeNormal(vec4 rows[3], vec3 n) {
 Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
     Surface s;
     s.offsetFloor = 0.0;
+#ifndef PRISM_PLANES_ONLY // (its module has planes only: trace_bindings.glsl)
     if (HAS_SPHERES && hit.kind == kKindSphere) {
         GpuSphere sphere = sphereAt(hit.index);
         vec4 cr = sphere.centerRadius;
@@ -83,7 +84,9 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
             s.dpdv = vec3(-n.y * n.x, n.x * n.x + n.z * n.z, -n.y * n.z);
         }
         s.material = sphereMaterial(sphere);
-    } else if (HAS_PLANES && hit.kind == kKindPlane) {
+    } else
+#endif
+    if (HAS_PLANES && hit.kind == kKindPlane) {
         GpuPlane plane = planeAt(hit.index);
         vec4 no = plane.normalOffset;
         vec3 p = origin + hit.t * dir;
@@ -98,7 +101,9 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
             s.dpdv = cross(no.xyz, s.dpdu);
         }
         s.material = planeMaterial(plane);
-    } else {
+    }
+#ifndef PRISM_PLANES_ONLY
+    else {
         GpuTriangle tri = triangleAt(hit.index);
         bool instanced = HAS_INSTANCES && hit.instance != kNoInstance;
         vec4 toWorld[3];
@@ -149,6 +154,7 @@ Surface surfaceAt(vec3 origin, vec3 dir, Hit hit) {
         if (instanced && instanceOverridesMaterial(info)) // the placement's material
             s.material = instanceMaterial(info);
     }
+#endif
     return s;
 }
 

@@ -4,7 +4,14 @@
 // (capped at maxStorageBufferRange) is never read past its end.
 
 // Primitive kinds the scene has (bit k: kind k of shared/primitive_kinds.h).
+#ifdef PRISM_PLANES_ONLY
+// The module for tiles that see only planes (render/traced_tiles.h, tileClasses): kinds, grid
+// and resumption fixed rather than specialized, so that the grid's code folds away before
+// lavapipe front-ends the module (its pipeline is made in a third of the full one's time).
+const uint KINDS = 1u << kKindPlane;
+#else
 layout(constant_id = kSpecKinds) const uint KINDS = 0xFFu;
+#endif
 const bool HAS_SPHERES = (KINDS & (1u << kKindSphere)) != 0u;
 const bool HAS_PLANES = (KINDS & (1u << kKindPlane)) != 0u;
 const bool HAS_TRIANGLES = (KINDS & (1u << kKindTriangle)) != 0u;
@@ -22,17 +29,27 @@ layout(constant_id = kSpecStackSize) const uint STACK_SIZE = 9u;
 // Read the arrays that have texel views through them instead of storage buffers (faster on
 // lavapipe, and not capped at maxStorageBufferRange; docs/benchmarks.md).
 layout(constant_id = kSpecTexelBuffers) const bool TEXEL_BUFFERS = false;
+#ifdef PRISM_PLANES_ONLY
+const bool ADAPTIVE_GRID = false;
+const bool CELL_TRIANGLES = false;
+const bool CELL_SPHERES = false;
+#else
 layout(constant_id = kSpecAdaptiveGrid) const bool ADAPTIVE_GRID = false;
 // The grid's cells list triangles only, and cellTriangleArray holds each entry's triangle: a test
 // reads its vertices by the entry, with no primitive id (render/tracer_features.h).
 layout(constant_id = kSpecCellTriangles) const bool CELL_TRIANGLES = false;
 // Likewise for a grid of spheres only: cellSphereArray holds each entry's centre and radius.
 layout(constant_id = kSpecCellSpheres) const bool CELL_SPHERES = false;
+#endif
 // The studies' stand-ins for methods Prism replaced (trace_interface.h); the defaults fold away.
 layout(constant_id = kSpecFixedRayOffset) const float FIXED_RAY_OFFSET = 0.0;
 layout(constant_id = kSpecTriangleTest) const uint TRIANGLE_TEST = kTriangleTestWatertight;
 const bool MOLLER_TRUMBORE = TRIANGLE_TEST == kTriangleTestMollerTrumbore;
+#ifdef PRISM_PLANES_ONLY
+const bool RESUMABLE = false;
+#else
 layout(constant_id = kSpecResumable) const bool RESUMABLE = false;
+#endif
 
 layout(set = 0, binding = kBindingAccumImage, rgba32f) uniform image2D accumImage;
 layout(set = 0, binding = kBindingAovImage, rgba32f) uniform writeonly image2D aovImage;

@@ -20,6 +20,7 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
             }
         }
     }
+#ifndef PRISM_PLANES_ONLY // (its module has no grid: trace_bindings.glsl)
     if (HAS_SPHERES || HAS_TRIANGLES || HAS_INSTANCES) {
         vec3 invDir = 1.0 / dir;
         float tEnter, tExit;
@@ -136,6 +137,7 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
             }
         }
     }
+#endif
     return hit.kind != kKindNone;
 }
 

@@ -56,7 +56,36 @@ bool shadowBox(const Aabb &box, const glm::dvec4 &plane, const Light &light, Aab
     return std::isfinite(pad);
 }
 
+// p reflected in plane (n, w).
+glm::dvec3 mirrored(const glm::dvec3 &p, const glm::dvec4 &plane) {
+    glm::dvec3 n(plane);
+    return p - n * (2.0 * (glm::dot(n, p) - plane.w) / glm::dot(n, n));
+}
+
 } // namespace
+
+std::vector<Aabb> planeMirrorBoxes(const std::vector<Aabb> &boxes, const glm::dvec4 &plane,
+                                   const glm::dvec3 &eye, double spread) {
+    std::vector<Aabb> images;
+    images.reserve(boxes.size());
+    for (const Aabb &box : boxes) {
+        Aabb image;
+        double reach = 0.0; // the farthest corner of the image from the eye
+        for (int k = 0; k < 8; ++k) {
+            glm::dvec3 c((k & 1) ? box.max.x : box.min.x, (k & 2) ? box.max.y : box.min.y,
+                         (k & 4) ? box.max.z : box.min.z);
+            glm::dvec3 m = mirrored(c, plane);
+            image.grow(m);
+            reach = std::max(reach, glm::length(m - eye));
+        }
+        double far = maxAbs(eye) + spread + reach;
+        double pad = (kEpsilon + 2.0 * PRISM_OFFSET_RELATIVE) * far;
+        image.min -= pad;
+        image.max += pad;
+        images.push_back(image);
+    }
+    return images;
+}
 
 std::optional<std::vector<Aabb>> planeShadowBoxes(const std::vector<Aabb> &boxes,
                                                   const std::vector<glm::dvec4> &planes,

@@ -42,4 +42,18 @@ std::optional<std::vector<Aabb>> planeShadowBoxes(const std::vector<Aabb> &boxes
                                                   const std::vector<glm::dvec4> &planes,
                                                   const std::vector<Light> &lights);
 
+// Where a reflection off a mirror plane (n, w) may reach a box. The ray a plane hit reflects is
+// the mirror image of the camera ray continued through the plane, so it meets a box exactly
+// where the camera ray, past its hit, meets the box's mirror image: a tile whose rays may pass
+// through a mirror image needs the grid. The reflected ray leaves from its offset origin, which
+// shifts the mirror image of its line by at most that offset: for a camera ray that gets near
+// a mirror image at distance D from the eye the hit is nearer than D, so the offset is at most
+// PRISM_OFFSET_RELATIVE (|eye| + D). The mirror images of `boxes`, grown by that and by
+// rounding, for a camera at `eye` whose rays start within `spread` of it (a parallel camera's
+// half-width and half-height; 0 for perspective). Exact for a plane whose shading normal is its
+// normal (no normal or bump map) and where a reflected ray that misses the boxes meets nothing
+// else (no other plane).
+std::vector<Aabb> planeMirrorBoxes(const std::vector<Aabb> &boxes, const glm::dvec4 &plane,
+                                   const glm::dvec3 &eye, double spread);
+
 } // namespace prism

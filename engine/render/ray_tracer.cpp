@@ -10,6 +10,7 @@
 #include "render/plane_shadows.h"
 #include "shaders/trace.comp.spv.h"
 #include "shaders/trace_background.comp.spv.h"
+#include "shaders/trace_planes.comp.spv.h"
 #include "shaders/trace_profile.comp.spv.h"
 #include "shared/trace_interface.h"
 #include "vk/barriers.h"
@@ -53,14 +54,17 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     createImages(width, height);
     createPipeline();
     if (options.cullMissTiles)
-        missPipeline_ = createTracerPipeline(features_.backgroundOnly(), true);
-    if (options.cullMissTiles && options.cullPlaneTiles && planeTilesApply(scene)) {
+        missPipeline_ = createTracerPipeline(features_.backgroundOnly(), Module::BackgroundOnly);
+    PlaneTiles mode = planeTilesMode(scene);
+    if (options.cullMissTiles && options.cullPlaneTiles && mode != PlaneTiles::Never) {
         std::optional<std::vector<Aabb>> shadows =
             features_.shadows ? planeShadowBoxes(extent_.boxes, extent_.planes, scene.lights)
                               : std::vector<Aabb>{};
         planeTiles_ = shadows.has_value();
         if (shadows)
             planeShadows_ = std::move(*shadows);
+        if (mode == PlaneTiles::OneMirror)
+            mirrorPlane_ = extent_.planes[0];
     }
 }
 
@@ -68,36 +72,53 @@ vk::ComputePipeline &RayTracer::planesPipeline() {
     // Made when a view first has such tiles: many scenes' views have none (shadows over every
     // plane tile, a camera inside a box of walls), and the pipeline costs tens of milliseconds.
     if (!planesPipeline_)
-        planesPipeline_ = createTracerPipeline(features_.planesOnly(), false);
+        planesPipeline_ = createTracerPipeline(features_.planesOnly(mirrorPlane_.has_value()),
+                                               Module::PlanesOnly);
     return *planesPipeline_;
 }
 
-bool RayTracer::planeTilesApply(const Scene &scene) const {
+RayTracer::PlaneTiles RayTracer::planeTilesMode(const Scene &scene) const {
     // Resumable tracing dispatches tile by tile, with one pipeline.
     if (features_.resumable || extent_.boxes.empty() || extent_.planes.empty())
-        return false;
-    // The variant has no grid for any ray: a plane hit must start no secondary ray.
-    if (features_.maxDepth == 1 || (!features_.reflection && !features_.transmission))
-        return true;
-    return std::all_of(scene.planes.begin(), scene.planes.end(), [&](const Plane &p) {
-        const Material &m = scene.materials[p.material];
-        return !(features_.reflection && m.reflect > 0.0f) &&
-               !(features_.transmission && m.transmit > 0.0f);
-    });
+        return PlaneTiles::Never;
+    // The variant has no grid for any ray: a plane hit must start no secondary ray that could
+    // reach the grid.
+    if (features_.maxDepth == 1)
+        return PlaneTiles::NoSecondaryRays;
+    auto reflects = [&](const Plane &p) {
+        return features_.reflection && scene.materials[p.material].reflect > 0.0f;
+    };
+    auto refracts = [&](const Plane &p) {
+        return features_.transmission && scene.materials[p.material].transmit > 0.0f;
+    };
+    if (std::none_of(scene.planes.begin(), scene.planes.end(), reflects) &&
+        std::none_of(scene.planes.begin(), scene.planes.end(), refracts))
+        return PlaneTiles::NoSecondaryRays;
+    // One plane, a mirror (the seed scenes' reflective floors): its reflections are followed as
+    // mirror images (planeMirrorBoxes). One that refracts, or whose maps bend its normal, or a
+    // second plane a reflection could meet, is not.
+    const Plane &only = scene.planes[0];
+    if (scene.planes.size() == 1 && !refracts(only) &&
+        !scene.materials[only.material].hasSurfaceMaps())
+        return PlaneTiles::OneMirror;
+    return PlaneTiles::Never;
 }
 
 void RayTracer::createPipeline() {
-    pipeline_ = createTracerPipeline(features_, false);
+    pipeline_ = createTracerPipeline(features_, Module::Full);
 }
 
 std::unique_ptr<vk::ComputePipeline> RayTracer::createTracerPipeline(const TracerFeatures &features,
-                                                                     bool backgroundOnly) {
+                                                                     Module module) {
     vk::ComputePipelineDesc desc;
     // The profiling build times background tiles too, with the full module (no kinds).
     if (features.profile > 0)
         desc.spirv =
             std::span<const uint32_t>(kTraceProfileCompSpv, sizeof(kTraceProfileCompSpv) / 4);
-    else if (backgroundOnly)
+    else if (module == Module::PlanesOnly)
+        desc.spirv =
+            std::span<const uint32_t>(kTracePlanesCompSpv, sizeof(kTracePlanesCompSpv) / 4);
+    else if (module == Module::BackgroundOnly)
         desc.spirv =
             std::span<const uint32_t>(kTraceBackgroundCompSpv, sizeof(kTraceBackgroundCompSpv) / 4);
     else
@@ -223,8 +244,18 @@ TileLists RayTracer::frameTiles(const gpu::GpuFrameParams &params) const {
     TileRect image = imageTiles(width_, height_);
     if (!missPipeline_)
         return allTiles(image);
-    if (planeTiles_)
-        return tileLists(tileClasses(params, extent_, planeShadows_), image);
+    if (planeTiles_) {
+        std::vector<Aabb> needGrid = planeShadows_;
+        if (mirrorPlane_) { // where the view's camera rays, reflected, may reach the grid
+            double spread = gpu::isParallelCamera(params) ? glm::length(glm::dvec3(params.du)) +
+                                                                glm::length(glm::dvec3(params.dv))
+                                                          : 0.0;
+            std::vector<Aabb> mirrors =
+                planeMirrorBoxes(extent_.boxes, *mirrorPlane_, glm::dvec3(params.eye), spread);
+            needGrid.insert(needGrid.end(), mirrors.begin(), mirrors.end());
+        }
+        return tileLists(tileClasses(params, extent_, needGrid), image);
+    }
     return tileLists(tilesThatMayHit(params, extent_), image);
 }
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/ray_counts.h"
@@ -127,14 +128,22 @@ private:
     void createImages(uint32_t width, uint32_t height);
     void bindImages(vk::ComputePipeline &pipeline);
     // Whether tiles that see only planes may get the tracer without a grid: the scene has
-    // planes and grid geometry, and a plane hit starts no secondary ray at this depth.
-    bool planeTilesApply(const Scene &scene) const;
+    // planes and grid geometry, and a plane hit starts no secondary ray that could reach the
+    // grid except through one mirror plane, whose reflections the tiles are classed by.
+    enum class PlaneTiles {
+        Never,           // every plane tile keeps the grid
+        NoSecondaryRays, // depth 1, or no plane reflects or refracts
+        OneMirror,       // the scene's one plane reflects: mirror images too
+    };
+    PlaneTiles planeTilesMode(const Scene &scene) const;
     vk::ComputePipeline &planesPipeline();
     // The pipeline for features_, with every binding written.
     void createPipeline();
-    // `backgroundOnly`: the module compiled with PRISM_BACKGROUND_ONLY (render/traced_tiles.h).
+    // Which SPIR-V: trace.comp as it is, or compiled with PRISM_PLANES_ONLY or
+    // PRISM_BACKGROUND_ONLY (render/traced_tiles.h); the profiling build uses the full one.
+    enum class Module { Full, PlanesOnly, BackgroundOnly };
     std::unique_ptr<vk::ComputePipeline> createTracerPipeline(const TracerFeatures &features,
-                                                              bool backgroundOnly);
+                                                              Module module);
     // Resumable tracing: each sample of each tile dispatched until all its pixels are done.
     void startResuming();
     FrameResult renderResumable(const Camera &camera, uint32_t samplesPerPixel,
@@ -171,7 +180,8 @@ private:
     // planeTilesApply, and the shadows have a bound), and the shadow boxes they are classed by.
     bool planeTiles_ = false;
     std::vector<Aabb> planeShadows_;
-    std::array<uint32_t, 3> lastTiles_{}; // FrameResult::tiles of the last recordSamples
+    std::optional<glm::dvec4> mirrorPlane_; // PlaneTiles::OneMirror: the plane (n, w)
+    std::array<uint32_t, 3> lastTiles_{};   // FrameResult::tiles of the last recordSamples
 };
 
 } // namespace prism

@@ -79,10 +79,11 @@ TracerFeatures TracerFeatures::backgroundOnly() const {
     return f;
 }
 
-TracerFeatures TracerFeatures::planesOnly() const {
+TracerFeatures TracerFeatures::planesOnly(bool reflections) const {
     TracerFeatures f = *this;
     f.kinds &= 1u << gpu::kKindPlane;
-    f.reflection = f.transmission = f.vertexNormals = false;
+    f.reflection = f.reflection && reflections;
+    f.transmission = f.vertexNormals = false;
     f.adaptiveGrid = f.cellTriangles = f.cellSpheres = false;
     return f;
 }

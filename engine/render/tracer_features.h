@@ -78,9 +78,10 @@ struct TracerFeatures {
     // The same tracer for rays that hit nothing: no primitive kind and nothing that only a hit
     // uses; misses still see the environment, and AOVs are still written.
     TracerFeatures backgroundOnly() const;
-    // The same tracer for tiles whose rays meet only planes and start no secondary rays: no
-    // grid, no finite kind, no reflection or refraction (render/traced_tiles.h, tileClasses).
-    TracerFeatures planesOnly() const;
+    // The same tracer for tiles whose rays meet only planes and whose secondary rays, if any,
+    // miss the grid: no grid, no finite kind, no refraction, and no reflection unless
+    // `reflections` (a mirror plane's; render/traced_tiles.h, tileClasses).
+    TracerFeatures planesOnly(bool reflections) const;
     std::vector<vk::SpecializationConstant> specialization() const;
 };
 

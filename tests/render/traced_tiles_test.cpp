@@ -314,6 +314,62 @@ bool segmentMeetsSphere(glm::dvec3 o, glm::dvec3 a, const Sphere &s) {
     return t1 > 0.0 && t0 < 1.0;
 }
 
+// A reflection off the floor that meets a box: the camera ray, continued through the floor,
+// passes through the box's mirror image (grown for the reflected ray's offset origin).
+TEST(TracedTiles, EveryReflectionThatMeetsABoxComesFromACameraRayThroughItsMirrorImage) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), zeroOne(0.0, 1.0);
+    size_t reflections = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        glm::dvec3 n = glm::normalize(glm::dvec3(0.3 * unit(rng), 1.0, 0.3 * unit(rng)));
+        glm::dvec4 plane(n, 0.5 * unit(rng));
+        std::vector<Aabb> boxes;
+        for (int b = 0; b < 2; ++b) {
+            glm::dvec3 c(3.0 * unit(rng), 0.6 + 2.0 * zeroOne(rng), 3.0 * unit(rng));
+            glm::dvec3 half(0.05 + 0.5 * zeroOne(rng));
+            boxes.push_back(boxOf(c - half, c + half));
+        }
+        glm::dvec3 eye(6.0 * unit(rng), 2.0 + 3.0 * zeroOne(rng), 8.0 + 40.0 * zeroOne(rng));
+        std::vector<Aabb> mirrors = planeMirrorBoxes(boxes, plane, eye, 0.0);
+        ASSERT_EQ(mirrors.size(), boxes.size());
+        for (int k = 0; k < 4000; ++k) {
+            // Aimed at the mirror image of a point in or near a box, on its faces for a quarter
+            // of them (where the margin matters), pushed out by up to a few offsets.
+            const Aabb &box = boxes[size_t(k) % boxes.size()];
+            glm::dvec3 size = box.max - box.min;
+            glm::dvec3 b =
+                box.min + size * glm::dvec3(1.2 * zeroOne(rng) - 0.1, 1.2 * zeroOne(rng) - 0.1,
+                                            1.2 * zeroOne(rng) - 0.1);
+            if (k % 4 == 0) {
+                int axis = int(rng() % 3);
+                b[axis] = (rng() % 2 ? box.max[axis] : box.min[axis]) +
+                          unit(rng) * 4.0 * PRISM_OFFSET_RELATIVE * glm::length(eye);
+            }
+            glm::dvec3 image = b - n * (2.0 * (glm::dot(n, b) - plane.w));
+            glm::dvec3 d = glm::normalize(image - eye);
+            double t = (plane.w - glm::dot(n, eye)) / glm::dot(n, d);
+            if (!(t > 0.0))
+                continue;
+            glm::dvec3 hit = eye + t * d;
+            double e = PRISM_OFFSET_RELATIVE *
+                       std::max({std::abs(hit.x), std::abs(hit.y), std::abs(hit.z)});
+            glm::dvec3 origin = hit + e * n, reflected = d - 2.0 * glm::dot(d, n) * n;
+            bool meets = false;
+            for (const Aabb &box : boxes)
+                meets = meets || hitsBox(origin, reflected, box.min, box.max);
+            if (!meets)
+                continue;
+            ++reflections;
+            bool seen = false;
+            for (const Aabb &m : mirrors)
+                seen = seen || hitsBox(eye, d, m.min, m.max);
+            ASSERT_TRUE(seen) << "trial " << trial << ": a reflection meets a box, but its camera "
+                              << "ray passes through no mirror image";
+        }
+    }
+    EXPECT_GT(reflections, size_t(40000));
+}
+
 // End to end, with real geometry: in every tile left without the grid, no camera ray meets a
 // sphere, and no shadow ray from its floor hits (from any point of a spherical light, leaving
 // from the offset origin as the shader does) meets one either.
@@ -440,10 +496,19 @@ TEST_F(TracedTilesRender, ImagesOfMoreThan65535TilesAreCovered) {
 
 // Tiles traced without the grid change no pixel, AOV or ray count: at depth 1 under a reflective
 // floor (no secondary rays), at depth 3 under a matte one, with a soft shadow, two lights and a
-// parallel camera. Under a reflective floor at depth 3 a plane hit starts a reflected ray that
-// may meet the grid, so no tile goes without it there.
+// parallel camera, and under the reflective floor at depth 3 (its one mirror plane's
+// reflections followed as mirror images), with both cameras. Where a reflection could meet a
+// second plane, or the floor refracts, no tile goes without the grid.
 TEST_F(TracedTilesRender, TilesWithoutTheGridChangeNoPixel) {
     Scene shiny = stabilityScene(); // the floor reflects
+    Scene shinyParallel = shiny;
+    shinyParallel.camera.orthoHeight = 6.0f;
+    shinyParallel.lights[0].radius = 0.4f;
+    Scene twoMirrors = shiny;
+    twoMirrors.planes.push_back(
+        Plane{{0.0, 0.0, -4.0}, {0.0f, 0.0f, 1.0f}, shiny.planes[0].material});
+    Scene glassFloor = shiny;
+    glassFloor.materials[glassFloor.planes[0].material].transmit = 0.5f;
     Scene matte = shiny;
     matte.materials[matte.planes[0].material].reflect = 0.0f;
     Scene soft = matte;
@@ -457,8 +522,10 @@ TEST_F(TracedTilesRender, TilesWithoutTheGridChangeNoPixel) {
         uint32_t depth;
         bool planeTiles;
     };
-    for (Case c : {Case{&shiny, 1, true}, Case{&shiny, 3, false}, Case{&matte, 3, true},
-                   Case{&soft, 2, true}, Case{&twoLights, 2, true}, Case{&parallel, 2, true}}) {
+    for (Case c : {Case{&shiny, 1, true}, Case{&shiny, 3, true}, Case{&shinyParallel, 3, true},
+                   Case{&twoMirrors, 3, false}, Case{&twoMirrors, 1, true},
+                   Case{&glassFloor, 3, false}, Case{&matte, 3, true}, Case{&soft, 2, true},
+                   Case{&twoLights, 2, true}, Case{&parallel, 2, true}}) {
         TracerOptions with, without;
         with.writeAov = without.writeAov = true;
         without.cullPlaneTiles = false;
