@@ -240,10 +240,10 @@ gpu::GpuFrameParams RayTracer::frameParams(const Camera &camera, uint32_t sample
     return params;
 }
 
-TileLists RayTracer::frameTiles(const gpu::GpuFrameParams &params) const {
+std::vector<uint8_t> RayTracer::frameTileClasses(const gpu::GpuFrameParams &params) const {
     TileRect image = imageTiles(width_, height_);
     if (!missPipeline_)
-        return allTiles(image);
+        return std::vector<uint8_t>(size_t(image.width()) * image.height(), kTileFull);
     if (planeTiles_) {
         std::vector<Aabb> needGrid = planeShadows_;
         if (mirrorPlane_) { // where the view's camera rays, reflected, may reach the grid
@@ -254,9 +254,14 @@ TileLists RayTracer::frameTiles(const gpu::GpuFrameParams &params) const {
                 planeMirrorBoxes(extent_.boxes, *mirrorPlane_, glm::dvec3(params.eye), spread);
             needGrid.insert(needGrid.end(), mirrors.begin(), mirrors.end());
         }
-        return tileLists(tileClasses(params, extent_, needGrid), image);
+        return tileClasses(params, extent_, needGrid);
     }
-    return tileLists(tilesThatMayHit(params, extent_), image);
+    return tilesThatMayHit(params, extent_);
+}
+
+TileLists RayTracer::frameTiles(const gpu::GpuFrameParams &params) {
+    lastTileClasses_ = frameTileClasses(params);
+    return tileLists(lastTileClasses_, imageTiles(width_, height_));
 }
 
 void RayTracer::recordTileList(VkCommandBuffer commands, const TileLists &lists) {

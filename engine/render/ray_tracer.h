@@ -73,6 +73,9 @@ public:
 
     // Copies the accumulation (and AOVs) to the host and divides by the sample count.
     TracedImage readback(uint32_t samplesPerPixel);
+    // The class of each 8x8 tile (row by row) in the last frame traced (tileClasses): which
+    // tracer ran it. Empty before the first frame and after resumable ones (all full there).
+    const std::vector<uint8_t> &lastTileClasses() const { return lastTileClasses_; }
 
     // Resumable tracing (shaders/resume.glsl) for callers that record their own frames (the
     // viewer), once their counters show cut pixels: enableResumable switches this tracer for
@@ -108,9 +111,11 @@ private:
     // next dispatch read the accumulation it wrote.
     void recordDispatch(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
                         uint32_t groupsX, uint32_t groupsY);
-    // The frame's tiles for `params`' camera (render/traced_tiles.h), those the full tracer
-    // must run on first; all of them for the full tracer when culling is off.
-    TileLists frameTiles(const gpu::GpuFrameParams &params) const;
+    // The class of each tile for `params`' camera (render/traced_tiles.h, tileClasses); all
+    // full when culling is off.
+    std::vector<uint8_t> frameTileClasses(const gpu::GpuFrameParams &params) const;
+    // The frame's tile lists by class, the classes kept for lastTileClasses.
+    TileLists frameTiles(const gpu::GpuFrameParams &params);
     // Writes `lists` into the tile list inside the command buffer (so that frames in flight
     // each read their own), ordered after earlier dispatches' reads and before later ones.
     void recordTileList(VkCommandBuffer commands, const TileLists &lists);
@@ -181,7 +186,8 @@ private:
     bool planeTiles_ = false;
     std::vector<Aabb> planeShadows_;
     std::optional<glm::dvec4> mirrorPlane_; // PlaneTiles::OneMirror: the plane (n, w)
-    std::array<uint32_t, 3> lastTiles_{};   // FrameResult::tiles of the last recordSamples
+    std::array<uint32_t, 3> lastTiles_{};
+    std::vector<uint8_t> lastTileClasses_; // FrameResult::tiles of the last recordSamples
 };
 
 } // namespace prism

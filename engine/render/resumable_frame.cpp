@@ -111,6 +111,7 @@ FrameResult RayTracer::renderResumable(const Camera &camera, uint32_t samplesPer
     result.loopCutPixels = counted.loopCutPixels;
     TileRect image = imageTiles(width_, height_);
     result.tiles = {image.width() * image.height(), 0u, 0u};
+    lastTileClasses_.clear();
     return result;
 }
 

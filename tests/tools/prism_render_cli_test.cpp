@@ -34,7 +34,7 @@ TEST_F(PrismRenderCli, HelpListsEveryOption) {
     CliResult r = run("--help");
     EXPECT_EQ(r.exitCode, 0);
     for (const char *option : {"--size", "--spp", "--depth", "--grid", "--aov", "--backend",
-                               "--repeat", "--stats", "--quiet"})
+                               "--repeat", "--stats", "--quiet", "--show-tiles"})
         EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
 
@@ -137,6 +137,48 @@ TEST_F(PrismRenderCli, StatsLineAndExrWithAovsAndMetadata) {
     EXPECT_TRUE(hasDevice);
     EXPECT_TRUE(hasChoice) << "the EXR says which grid auto chose";
     EXPECT_TRUE(hasCounts);
+}
+
+// --show-tiles tints exactly the tiles --stats counts as traced without the grid or as
+// background, and leaves the full tracer's tiles as rendered.
+TEST_F(PrismRenderCli, ShowTilesTintsTheTilesTheStatsCount) {
+    fs::path scene = write("floor.scene", "camera eye 0 3 8 look 0 0.5 0 fov 50\n"
+                                          "light -4 4 0\n"
+                                          "sphere 0 0.5 0 0.5\nplane 0 0 0 0 1 0\n");
+    fs::path plain = dir() / "plain.exr", tinted = dir() / "tinted.exr";
+    std::string common = " --size 160x120 --depth 1 --stats --quiet";
+    CliResult a = run(scene.string() + " -o " + plain.string() + common);
+    CliResult b = run(scene.string() + " -o " + tinted.string() + common + " --show-tiles");
+    ASSERT_EQ(a.exitCode, 0) << a.out;
+    ASSERT_EQ(b.exitCode, 0) << b.out;
+    nlohmann::json tiles = nlohmann::json::parse(b.stdoutOnly)["tiles"];
+    EXPECT_EQ(nlohmann::json::parse(a.stdoutOnly)["tiles"], tiles);
+    uint32_t full = tiles["full"], planes = tiles["planes_only"], background = tiles["background"];
+    EXPECT_EQ(full + planes + background, 20u * 15u);
+    EXPECT_GT(full, 0u);
+    EXPECT_GT(planes, 0u) << "the floor round the sphere and its shadow needs no grid";
+    EXPECT_GT(background, 0u) << "the sky";
+    prism::LoadedImage x = prism::readImage(plain), y = prism::readImage(tinted);
+    ASSERT_EQ(x.pixels.size(), y.pixels.size());
+    uint32_t changedTiles = 0;
+    for (int ty = 0; ty < 15; ++ty)
+        for (int tx = 0; tx < 20; ++tx) {
+            int changed = 0;
+            for (int py = ty * 8; py < ty * 8 + 8; ++py)
+                for (int px = tx * 8; px < tx * 8 + 8; ++px)
+                    for (int k = 0; k < 3; ++k) {
+                        size_t i = (size_t(py) * 160 + size_t(px)) * x.channels + size_t(k);
+                        changed += x.pixels[i] != y.pixels[i] ? 1 : 0;
+                    }
+            EXPECT_TRUE(changed == 0 || changed == 8 * 8 * 3)
+                << "tile " << tx << "," << ty << " is tinted in part";
+            changedTiles += changed > 0 ? 1 : 0;
+        }
+    EXPECT_EQ(changedTiles, planes + background);
+    CliResult cpu = run(scene.string() + " -o " + (dir() / "cpu.png").string() +
+                        " --size 8x8 --backend cpu --show-tiles");
+    EXPECT_NE(cpu.exitCode, 0);
+    EXPECT_NE(cpu.out.find("--show-tiles"), std::string::npos) << cpu.out;
 }
 
 TEST_F(PrismRenderCli, CpuBackendWritesPng) {

@@ -79,6 +79,10 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
         ->check(CLI::Range(1u, 10000u))
         ->default_val(1);
     app.add_flag("--stats", options.stats, "Print one JSON line of timings and ray counts");
+    app.add_flag("--show-tiles", options.showTiles,
+                 "Tint each 8x8 tile by the tracer that ran it: as rendered where the full "
+                 "tracer did, blue where the one without the grid did (only planes seen, out "
+                 "of the geometry's shadows and reflections), grey where the background's did");
     app.add_flag("--quiet", options.quiet, "No progress or warnings on stderr");
     app.add_flag("--validation", options.validation,
                  "Enable Vulkan validation layers (also PRISM_VALIDATION=1)");
@@ -103,6 +107,8 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
     std::string ext = lowerExtension(options.outputPath);
     if (ext != ".exr" && ext != ".png")
         throw Error("output " + output + ": unsupported extension; use .exr or .png");
+    if (options.showTiles && options.backend == Backend::Cpu)
+        throw Error("--show-tiles shows the Vulkan tracer's tiles; the cpu backend has none");
     if ((options.aovDepth || options.aovNormal) && ext != ".exr")
         throw Error("--aov needs an .exr output (PNG holds colour only)");
     options.validation = validationWanted(options.validation);

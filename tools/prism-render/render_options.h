@@ -22,6 +22,7 @@ struct RenderOptions {
     Backend backend = Backend::Vulkan;
     uint32_t repeat = 1;
     bool stats = false;
+    bool showTiles = false; // tint tiles by the tracer that ran them (tile_tint.h)
     bool quiet = false;
     bool validation = false;
     std::string deviceFilter;

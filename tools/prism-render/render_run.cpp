@@ -18,6 +18,7 @@
 #include "render_metadata.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_origin.h"
+#include "tile_tint.h"
 #include "vk/context.h"
 
 namespace prism {
@@ -95,6 +96,8 @@ RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const G
     out.image.width = int(traced.width);
     out.image.height = int(traced.height);
     out.image.rgba = std::move(traced.rgba);
+    if (o.showTiles)
+        tintTilesByClass(out.image.rgba, traced.width, traced.height, tracer.lastTileClasses());
     if (o.aovDepth)
         out.image.depth = std::move(traced.depth);
     if (o.aovNormal)
