@@ -55,16 +55,27 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     createPipeline();
     if (options.cullMissTiles)
         missPipeline_ = createTracerPipeline(features_.backgroundOnly(), Module::BackgroundOnly);
-    PlaneTiles mode = planeTilesMode(scene);
+    size_t mirror = 0;
+    PlaneTiles mode = planeTilesMode(scene, mirror);
     if (options.cullMissTiles && options.cullPlaneTiles && mode != PlaneTiles::Never) {
-        std::optional<std::vector<Aabb>> shadows =
-            features_.shadows ? planeShadowBoxes(extent_.boxes, extent_.planes, scene.lights)
-                              : std::vector<Aabb>{};
+        auto shadowsOn = [&](const std::vector<glm::dvec4> &planes) {
+            return features_.shadows ? planeShadowBoxes(extent_.boxes, planes, scene.lights)
+                                     : std::vector<Aabb>{};
+        };
+        std::optional<std::vector<Aabb>> shadows = shadowsOn(extent_.planes);
         planeTiles_ = shadows.has_value();
         if (shadows)
             planeShadows_ = std::move(*shadows);
-        if (mode == PlaneTiles::OneMirror)
-            mirrorPlane_ = extent_.planes[0];
+        if (planeTiles_ && mode == PlaneTiles::OneMirror) {
+            // What a reflection may meet: the grid's blocks, and the other planes where their
+            // shadow rays may reach the grid (they are matte: nothing follows from them).
+            std::vector<glm::dvec4> others = extent_.planes;
+            others.erase(others.begin() + std::ptrdiff_t(mirror));
+            std::vector<Aabb> otherShadows = shadowsOn(others).value();
+            mirrorPlane_ = extent_.planes[mirror];
+            mirrorCasters_ = extent_.boxes;
+            mirrorCasters_.insert(mirrorCasters_.end(), otherShadows.begin(), otherShadows.end());
+        }
     }
 }
 
@@ -77,7 +88,7 @@ vk::ComputePipeline &RayTracer::planesPipeline() {
     return *planesPipeline_;
 }
 
-RayTracer::PlaneTiles RayTracer::planeTilesMode(const Scene &scene) const {
+RayTracer::PlaneTiles RayTracer::planeTilesMode(const Scene &scene, size_t &mirror) const {
     // Resumable tracing dispatches tile by tile, with one pipeline.
     if (features_.resumable || extent_.boxes.empty() || extent_.planes.empty())
         return PlaneTiles::Never;
@@ -91,15 +102,19 @@ RayTracer::PlaneTiles RayTracer::planeTilesMode(const Scene &scene) const {
     auto refracts = [&](const Plane &p) {
         return features_.transmission && scene.materials[p.material].transmit > 0.0f;
     };
-    if (std::none_of(scene.planes.begin(), scene.planes.end(), reflects) &&
-        std::none_of(scene.planes.begin(), scene.planes.end(), refracts))
+    if (std::any_of(scene.planes.begin(), scene.planes.end(), refracts))
+        return PlaneTiles::Never;
+    std::vector<size_t> mirrors;
+    for (size_t i = 0; i < scene.planes.size(); ++i)
+        if (reflects(scene.planes[i]))
+            mirrors.push_back(i);
+    if (mirrors.empty())
         return PlaneTiles::NoSecondaryRays;
-    // One plane, a mirror (the seed scenes' reflective floors): its reflections are followed as
-    // mirror images (planeMirrorBoxes). One that refracts, or whose maps bend its normal, or a
-    // second plane a reflection could meet, is not.
-    const Plane &only = scene.planes[0];
-    if (scene.planes.size() == 1 && !refracts(only) &&
-        !scene.materials[only.material].hasSurfaceMaps())
+    // One mirror among matte planes (the seed scenes' reflective floors and plain walls): its
+    // reflections are followed as mirror images (planeMirrorBoxes). Not where maps bend its
+    // normal, nor where a reflection could meet a second mirror.
+    mirror = mirrors[0];
+    if (mirrors.size() == 1 && !scene.materials[scene.planes[mirror].material].hasSurfaceMaps())
         return PlaneTiles::OneMirror;
     return PlaneTiles::Never;
 }
@@ -251,7 +266,7 @@ std::vector<uint8_t> RayTracer::frameTileClasses(const gpu::GpuFrameParams &para
                                                                 glm::length(glm::dvec3(params.dv))
                                                           : 0.0;
             std::vector<Aabb> mirrors =
-                planeMirrorBoxes(extent_.boxes, *mirrorPlane_, glm::dvec3(params.eye), spread);
+                planeMirrorBoxes(mirrorCasters_, *mirrorPlane_, glm::dvec3(params.eye), spread);
             needGrid.insert(needGrid.end(), mirrors.begin(), mirrors.end());
         }
         return tileClasses(params, extent_, needGrid);

@@ -138,9 +138,10 @@ private:
     enum class PlaneTiles {
         Never,           // every plane tile keeps the grid
         NoSecondaryRays, // depth 1, or no plane reflects or refracts
-        OneMirror,       // the scene's one plane reflects: mirror images too
+        OneMirror,       // one plane reflects, the others are matte: mirror images too
     };
-    PlaneTiles planeTilesMode(const Scene &scene) const;
+    // `mirror`: the reflecting plane's index, for OneMirror.
+    PlaneTiles planeTilesMode(const Scene &scene, size_t &mirror) const;
     vk::ComputePipeline &planesPipeline();
     // The pipeline for features_, with every binding written.
     void createPipeline();
@@ -186,6 +187,8 @@ private:
     bool planeTiles_ = false;
     std::vector<Aabb> planeShadows_;
     std::optional<glm::dvec4> mirrorPlane_; // PlaneTiles::OneMirror: the plane (n, w)
+    // What its reflections may meet: the blocks and the other planes' shadow boxes.
+    std::vector<Aabb> mirrorCasters_;
     std::array<uint32_t, 3> lastTiles_{};
     std::vector<uint8_t> lastTileClasses_; // FrameResult::tiles of the last recordSamples
 };

@@ -497,8 +497,8 @@ TEST_F(TracedTilesRender, ImagesOfMoreThan65535TilesAreCovered) {
 // Tiles traced without the grid change no pixel, AOV or ray count: at depth 1 under a reflective
 // floor (no secondary rays), at depth 3 under a matte one, with a soft shadow, two lights and a
 // parallel camera, and under the reflective floor at depth 3 (its one mirror plane's
-// reflections followed as mirror images), with both cameras. Where a reflection could meet a
-// second plane, or the floor refracts, no tile goes without the grid.
+// reflections followed as mirror images), with both cameras and with two matte walls. Where a
+// reflection could meet a second mirror, or the floor refracts, no tile goes without the grid.
 TEST_F(TracedTilesRender, TilesWithoutTheGridChangeNoPixel) {
     Scene shiny = stabilityScene(); // the floor reflects
     Scene shinyParallel = shiny;
@@ -507,6 +507,10 @@ TEST_F(TracedTilesRender, TilesWithoutTheGridChangeNoPixel) {
     Scene twoMirrors = shiny;
     twoMirrors.planes.push_back(
         Plane{{0.0, 0.0, -4.0}, {0.0f, 0.0f, 1.0f}, shiny.planes[0].material});
+    Scene mirrorAndWalls = shiny; // the seed scenes' room: a mirror floor, two matte walls
+    uint32_t wall = addMaterial(mirrorAndWalls, "wall", {0.75f, 0.72f, 0.68f});
+    mirrorAndWalls.planes.push_back(Plane{{0.0, 0.0, -3.0}, {0.0f, 0.0f, 1.0f}, wall});
+    mirrorAndWalls.planes.push_back(Plane{{-3.5, 0.0, 0.0}, {1.0f, 0.0f, 0.0f}, wall});
     Scene glassFloor = shiny;
     glassFloor.materials[glassFloor.planes[0].material].transmit = 0.5f;
     Scene matte = shiny;
@@ -523,9 +527,9 @@ TEST_F(TracedTilesRender, TilesWithoutTheGridChangeNoPixel) {
         bool planeTiles;
     };
     for (Case c : {Case{&shiny, 1, true}, Case{&shiny, 3, true}, Case{&shinyParallel, 3, true},
-                   Case{&twoMirrors, 3, false}, Case{&twoMirrors, 1, true},
-                   Case{&glassFloor, 3, false}, Case{&matte, 3, true}, Case{&soft, 2, true},
-                   Case{&twoLights, 2, true}, Case{&parallel, 2, true}}) {
+                   Case{&mirrorAndWalls, 3, true}, Case{&twoMirrors, 3, false},
+                   Case{&twoMirrors, 1, true}, Case{&glassFloor, 3, false}, Case{&matte, 3, true},
+                   Case{&soft, 2, true}, Case{&twoLights, 2, true}, Case{&parallel, 2, true}}) {
         TracerOptions with, without;
         with.writeAov = without.writeAov = true;
         without.cullPlaneTiles = false;
