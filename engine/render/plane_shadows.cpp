@@ -112,4 +112,42 @@ std::optional<std::vector<Aabb>> planeShadowBoxes(const std::vector<Aabb> &boxes
     return shadows;
 }
 
+std::optional<PlaneTileGuards> planeTileGuards(const std::vector<Aabb> &boxes,
+                                               const std::vector<glm::dvec4> &planes,
+                                               const std::vector<Light> &lights, bool shadows,
+                                               std::optional<size_t> mirror) {
+    auto shadowsOn = [&](const std::vector<glm::dvec4> &on) {
+        return shadows ? planeShadowBoxes(boxes, on, lights) : std::vector<Aabb>{};
+    };
+    std::optional<std::vector<Aabb>> all = shadowsOn(planes);
+    if (!all)
+        return std::nullopt;
+    PlaneTileGuards guards;
+    guards.shadows = std::move(*all);
+    if (mirror) {
+        std::vector<glm::dvec4> others = planes;
+        others.erase(others.begin() + std::ptrdiff_t(*mirror));
+        std::vector<Aabb> otherShadows = shadowsOn(others).value(); // a subset: bounded too
+        guards.mirror = planes[*mirror];
+        guards.mirrorCasters = boxes;
+        guards.mirrorCasters.insert(guards.mirrorCasters.end(), otherShadows.begin(),
+                                    otherShadows.end());
+    }
+    return guards;
+}
+
+std::vector<Aabb> needGridBoxes(const PlaneTileGuards &guards, const gpu::GpuFrameParams &frame) {
+    std::vector<Aabb> boxes = guards.shadows;
+    if (guards.mirror) {
+        // A parallel camera's rays start up to its half-width and half-height from the eye.
+        double spread = gpu::isParallelCamera(frame)
+                            ? glm::length(glm::dvec3(frame.du)) + glm::length(glm::dvec3(frame.dv))
+                            : 0.0;
+        std::vector<Aabb> mirrors =
+            planeMirrorBoxes(guards.mirrorCasters, *guards.mirror, glm::dvec3(frame.eye), spread);
+        boxes.insert(boxes.end(), mirrors.begin(), mirrors.end());
+    }
+    return boxes;
+}
+
 } // namespace prism

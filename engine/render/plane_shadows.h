@@ -27,6 +27,7 @@
 
 #include "accel/bounds.h"
 #include "scene/scene.h"
+#include "shared/gpu_types.h"
 
 namespace prism {
 
@@ -55,5 +56,27 @@ std::optional<std::vector<Aabb>> planeShadowBoxes(const std::vector<Aabb> &boxes
 // else (no other plane).
 std::vector<Aabb> planeMirrorBoxes(const std::vector<Aabb> &boxes, const glm::dvec4 &plane,
                                    const glm::dvec3 &eye, double spread);
+
+// What decides, for a scene, which tiles that see only planes may go without the grid.
+struct PlaneTileGuards {
+    std::vector<Aabb> shadows;        // planeShadowBoxes of every plane
+    std::optional<glm::dvec4> mirror; // the one plane that reflects, if any (the rest are matte)
+    // What the mirror's reflections may meet: the blocks, and the other planes' shadow boxes (a
+    // reflection that meets a matte plane shades it; nothing follows from there).
+    std::vector<Aabb> mirrorCasters;
+};
+
+// The guards of the blocks `boxes` over `planes` lit by `lights` (no shadow boxes when
+// `shadows` is off), with planes[*mirror] the one mirror; nullopt where some shadow has no
+// bound.
+std::optional<PlaneTileGuards> planeTileGuards(const std::vector<Aabb> &boxes,
+                                               const std::vector<glm::dvec4> &planes,
+                                               const std::vector<Light> &lights, bool shadows,
+                                               std::optional<size_t> mirror);
+
+// The boxes that a frame's camera rays must miss for a tile that sees only planes to go without
+// the grid: the shadow boxes, and the mirror images of what reflections may meet, grown for
+// this camera (planeMirrorBoxes).
+std::vector<Aabb> needGridBoxes(const PlaneTileGuards &guards, const gpu::GpuFrameParams &frame);
 
 } // namespace prism

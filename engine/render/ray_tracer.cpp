@@ -57,34 +57,18 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
         missPipeline_ = createTracerPipeline(features_.backgroundOnly(), Module::BackgroundOnly);
     size_t mirror = 0;
     PlaneTiles mode = planeTilesMode(scene, mirror);
-    if (options.cullMissTiles && options.cullPlaneTiles && mode != PlaneTiles::Never) {
-        auto shadowsOn = [&](const std::vector<glm::dvec4> &planes) {
-            return features_.shadows ? planeShadowBoxes(extent_.boxes, planes, scene.lights)
-                                     : std::vector<Aabb>{};
-        };
-        std::optional<std::vector<Aabb>> shadows = shadowsOn(extent_.planes);
-        planeTiles_ = shadows.has_value();
-        if (shadows)
-            planeShadows_ = std::move(*shadows);
-        if (planeTiles_ && mode == PlaneTiles::OneMirror) {
-            // What a reflection may meet: the grid's blocks, and the other planes where their
-            // shadow rays may reach the grid (they are matte: nothing follows from them).
-            std::vector<glm::dvec4> others = extent_.planes;
-            others.erase(others.begin() + std::ptrdiff_t(mirror));
-            std::vector<Aabb> otherShadows = shadowsOn(others).value();
-            mirrorPlane_ = extent_.planes[mirror];
-            mirrorCasters_ = extent_.boxes;
-            mirrorCasters_.insert(mirrorCasters_.end(), otherShadows.begin(), otherShadows.end());
-        }
-    }
+    if (options.cullMissTiles && options.cullPlaneTiles && mode != PlaneTiles::Never)
+        planeGuards_ = planeTileGuards(
+            extent_.boxes, extent_.planes, scene.lights, features_.shadows,
+            mode == PlaneTiles::OneMirror ? std::optional<size_t>(mirror) : std::nullopt);
 }
 
 vk::ComputePipeline &RayTracer::planesPipeline() {
     // Made when a view first has such tiles: many scenes' views have none (shadows over every
     // plane tile, a camera inside a box of walls), and the pipeline costs tens of milliseconds.
     if (!planesPipeline_)
-        planesPipeline_ = createTracerPipeline(features_.planesOnly(mirrorPlane_.has_value()),
-                                               Module::PlanesOnly);
+        planesPipeline_ = createTracerPipeline(
+            features_.planesOnly(planeGuards_->mirror.has_value()), Module::PlanesOnly);
     return *planesPipeline_;
 }
 
@@ -259,18 +243,8 @@ std::vector<uint8_t> RayTracer::frameTileClasses(const gpu::GpuFrameParams &para
     TileRect image = imageTiles(width_, height_);
     if (!missPipeline_)
         return std::vector<uint8_t>(size_t(image.width()) * image.height(), kTileFull);
-    if (planeTiles_) {
-        std::vector<Aabb> needGrid = planeShadows_;
-        if (mirrorPlane_) { // where the view's camera rays, reflected, may reach the grid
-            double spread = gpu::isParallelCamera(params) ? glm::length(glm::dvec3(params.du)) +
-                                                                glm::length(glm::dvec3(params.dv))
-                                                          : 0.0;
-            std::vector<Aabb> mirrors =
-                planeMirrorBoxes(mirrorCasters_, *mirrorPlane_, glm::dvec3(params.eye), spread);
-            needGrid.insert(needGrid.end(), mirrors.begin(), mirrors.end());
-        }
-        return tileClasses(params, extent_, needGrid);
-    }
+    if (planeGuards_)
+        return tileClasses(params, extent_, needGridBoxes(*planeGuards_, params));
     return tilesThatMayHit(params, extent_);
 }
 
@@ -298,7 +272,7 @@ void RayTracer::recordSample(VkCommandBuffer commands, const gpu::GpuFrameParams
                              const TileLists &lists) {
     uint32_t total = uint32_t(lists.tiles.size());
     recordTiles(commands, *pipeline_, params, 0, lists.full);
-    if (lists.traced > lists.full) // only where planeTiles_
+    if (lists.traced > lists.full) // only where planeGuards_
         recordTiles(commands, planesPipeline(), params, lists.full, lists.traced - lists.full);
     if (missPipeline_)
         recordTiles(commands, *missPipeline_, params, lists.traced, total - lists.traced);

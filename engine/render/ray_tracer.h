@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/ray_counts.h"
+#include "render/plane_shadows.h"
 #include "render/resume_plan.h"
 #include "render/scene_buffers.h"
 #include "render/traced_tiles.h"
@@ -179,16 +180,12 @@ private:
     // TracerOptions::cullMissTiles is off.
     std::unique_ptr<vk::ComputePipeline> missPipeline_;
     // The tracer without the grid, for tiles that see only planes out of the grid's shadows
-    // (tileClasses), where planeTiles_: made by planesPipeline() when a view first has some.
+    // (tileClasses), where planeGuards_: made by planesPipeline() when a view first has some.
     std::unique_ptr<vk::ComputePipeline> planesPipeline_;
     SceneExtent extent_;
-    // Whether tiles are classed with planes only (TracerOptions::cullPlaneTiles,
-    // planeTilesApply, and the shadows have a bound), and the shadow boxes they are classed by.
-    bool planeTiles_ = false;
-    std::vector<Aabb> planeShadows_;
-    std::optional<glm::dvec4> mirrorPlane_; // PlaneTiles::OneMirror: the plane (n, w)
-    // What its reflections may meet: the blocks and the other planes' shadow boxes.
-    std::vector<Aabb> mirrorCasters_;
+    // What tiles are classed with planes only by (render/plane_shadows.h), where they are:
+    // TracerOptions::cullPlaneTiles, planeTilesMode, and shadows with a bound.
+    std::optional<PlaneTileGuards> planeGuards_;
     std::array<uint32_t, 3> lastTiles_{};
     std::vector<uint8_t> lastTileClasses_; // FrameResult::tiles of the last recordSamples
 };

@@ -433,6 +433,108 @@ TEST(TracedTiles, NoRayOfATileWithoutTheGridMeetsTheGridsGeometry) {
     EXPECT_GT(shadowRays, size_t(20000));
 }
 
+// The seed scenes' room: a mirror floor and two matte walls. In every tile left without the
+// grid, no camera ray, no shadow ray from its plane hit, no reflection off the floor, and no
+// shadow ray from where that reflection meets a wall, meets a sphere.
+TEST(TracedTiles, NoRayOfAMirrorRoomsTileWithoutTheGridMeetsTheGridsGeometry) {
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), zeroOne(0.0, 1.0);
+    size_t planeTiles = 0, tiles = 0, wallReflections = 0;
+    auto offsetFrom = [](glm::dvec3 p, glm::dvec3 facing) {
+        return p + PRISM_OFFSET_RELATIVE * std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) *
+                       facing;
+    };
+    for (int trial = 0; trial < 12; ++trial) {
+        Scene scene = sceneWithDefaultMaterial();
+        uint32_t mirror = addMaterial(scene, "mirror", {0.6f, 0.6f, 0.6f}, 0.3f);
+        scene.planes.push_back(Plane{{0.0, 0.0, 0.0}, {0.0f, 1.0f, 0.0f}, mirror});
+        scene.planes.push_back(Plane{{0.0, 0.0, -4.0}, {0.0f, 0.0f, 1.0f}, 0});
+        scene.planes.push_back(Plane{{-4.5, 0.0, 0.0}, {1.0f, 0.0f, 0.0f}, 0});
+        for (int i = 0; i < 5; ++i) {
+            double r = 0.15 + 0.35 * zeroOne(rng);
+            scene.spheres.push_back(
+                Sphere{{3.0 * unit(rng), r + 1.2 * zeroOne(rng), 3.0 * unit(rng)}, float(r), 0});
+        }
+        // In front of the spheres as the walls see it (nearer the camera): bounded shadows.
+        scene.lights.push_back(
+            Light{{4.6 + 2.0 * zeroOne(rng), 5.0 + 2.0 * zeroOne(rng), 4.6 + 2.0 * zeroOne(rng)},
+                  {1.0f, 1.0f, 1.0f},
+                  trial % 2 == 0 ? 0.0f : 0.5f});
+        scene.camera.eye = {5.0 * unit(rng), 1.5 + 3.0 * zeroOne(rng), 9.0};
+        scene.camera.look = {unit(rng), 0.8, unit(rng)};
+        scene.camera.fovDegrees = 60.0f;
+        Grid grid = buildGrid(scene);
+        SceneExtent extent = sceneExtent(scene, grid);
+        std::optional<PlaneTileGuards> guards =
+            planeTileGuards(extent.boxes, extent.planes, scene.lights, true, size_t(0));
+        ASSERT_TRUE(guards.has_value());
+        gpu::GpuFrameParams frame = frameFor(scene.camera, 96, 72);
+        std::vector<uint8_t> classes = tileClasses(frame, extent, needGridBoxes(*guards, frame));
+        uint32_t tilesX = imageTiles(96, 72).x1;
+        const Light &light = scene.lights[0];
+        auto nearestPlane = [&](glm::dvec3 o, glm::dvec3 d, size_t skip, double &t) {
+            size_t best = SIZE_MAX;
+            t = INFINITY;
+            for (size_t k = 0; k < extent.planes.size(); ++k) {
+                glm::dvec3 n(extent.planes[k]);
+                double tk = (extent.planes[k].w - glm::dot(n, o)) / glm::dot(n, d);
+                if (k != skip && tk > 0.0 && tk < t) {
+                    t = tk;
+                    best = k;
+                }
+            }
+            return best;
+        };
+        auto expectUnshadowed = [&](glm::dvec3 p, glm::dvec3 n, const char *what) {
+            for (int s = 0; s < 3; ++s) {
+                glm::dvec3 u = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)) + 1e-9);
+                glm::dvec3 target = light.position + double(light.radius) * u;
+                if (glm::dot(target - p, n) <= 0.0)
+                    continue; // the light is behind the surface: no shadow ray
+                for (const Sphere &sphere : scene.spheres)
+                    ASSERT_FALSE(segmentMeetsSphere(offsetFrom(p, n), target, sphere))
+                        << "trial " << trial << ": " << what;
+            }
+        };
+        for (uint32_t py = 0; py < 72; ++py)
+            for (uint32_t px = 0; px < 96; ++px) {
+                if (classes[size_t(py / kTileSize) * tilesX + px / kTileSize] != kTilePlanesOnly)
+                    continue;
+                glm::dvec3 o, d;
+                cameraRay(frame, glm::vec2(px, py) + glm::vec2(zeroOne(rng), zeroOne(rng)), o, d);
+                for (const Sphere &s : scene.spheres)
+                    ASSERT_FALSE(segmentMeetsSphere(o, o + 1e4 * d, s)) << "trial " << trial;
+                double t;
+                size_t k = nearestPlane(o, d, SIZE_MAX, t);
+                if (k == SIZE_MAX)
+                    continue;
+                glm::dvec3 hit = o + t * d, n(extent.planes[k]);
+                if (glm::dot(n, d) > 0.0)
+                    n = -n; // the side the camera sees
+                expectUnshadowed(hit, n, "a shadow ray from a plane hit meets a sphere");
+                if (k != 0)
+                    continue; // a matte wall: nothing more
+                glm::dvec3 r = d - 2.0 * glm::dot(d, n) * n, from = offsetFrom(hit, n);
+                for (const Sphere &s : scene.spheres)
+                    ASSERT_FALSE(segmentMeetsSphere(from, from + 1e4 * r, s))
+                        << "trial " << trial << ": a reflection off the floor meets a sphere";
+                double tw;
+                size_t w = nearestPlane(from, r, 0, tw);
+                if (w == SIZE_MAX)
+                    continue;
+                glm::dvec3 q = from + tw * r, nw(extent.planes[w]);
+                if (glm::dot(nw, r) > 0.0)
+                    nw = -nw;
+                ++wallReflections;
+                expectUnshadowed(q, nw, "a reflected wall point's shadow ray meets a sphere");
+            }
+        planeTiles += size_t(std::count(classes.begin(), classes.end(), kTilePlanesOnly));
+        tiles += classes.size();
+    }
+    EXPECT_GT(double(planeTiles) / double(tiles), 0.1);
+    EXPECT_GT(wallReflections, size_t(5000)) << "reflections that meet a wall were checked";
+}
+
 class TracedTilesRender : public GpuTest {};
 
 // Culling is an optimisation only: every pixel, AOV and ray count as without it, for a view
@@ -511,6 +613,18 @@ TEST_F(TracedTilesRender, TilesWithoutTheGridChangeNoPixel) {
     uint32_t wall = addMaterial(mirrorAndWalls, "wall", {0.75f, 0.72f, 0.68f});
     mirrorAndWalls.planes.push_back(Plane{{0.0, 0.0, -3.0}, {0.0f, 0.0f, 1.0f}, wall});
     mirrorAndWalls.planes.push_back(Plane{{-3.5, 0.0, 0.0}, {1.0f, 0.0f, 0.0f}, wall});
+    // A ball high before the back wall, lit from the front: its shadow on the wall, seen in the
+    // floor, lies away from the ball's own reflection and from its shadow on the floor.
+    Scene wallShadow = sceneWithDefaultMaterial();
+    wallShadow.planes.push_back(Plane{{0.0, 0.0, 0.0},
+                                      {0.0f, 1.0f, 0.0f},
+                                      addMaterial(wallShadow, "floor", {0.6f, 0.6f, 0.6f}, 0.5f)});
+    wallShadow.planes.push_back(Plane{{0.0, 0.0, -4.0}, {0.0f, 0.0f, 1.0f}, 0});
+    wallShadow.spheres.push_back(Sphere{{0.0, 2.0, -2.0}, 0.3f, 0});
+    wallShadow.lights.push_back(Light{{0.0, 3.0, 6.0}, {1.0f, 1.0f, 1.0f}, 0.0f});
+    wallShadow.camera.eye = {0.0, 1.5, 8.0};
+    wallShadow.camera.look = {0.0, 0.8, -4.0};
+    wallShadow.camera.fovDegrees = 40.0f;
     Scene glassFloor = shiny;
     glassFloor.materials[glassFloor.planes[0].material].transmit = 0.5f;
     Scene matte = shiny;
@@ -526,10 +640,11 @@ TEST_F(TracedTilesRender, TilesWithoutTheGridChangeNoPixel) {
         uint32_t depth;
         bool planeTiles;
     };
-    for (Case c : {Case{&shiny, 1, true}, Case{&shiny, 3, true}, Case{&shinyParallel, 3, true},
-                   Case{&mirrorAndWalls, 3, true}, Case{&twoMirrors, 3, false},
-                   Case{&twoMirrors, 1, true}, Case{&glassFloor, 3, false}, Case{&matte, 3, true},
-                   Case{&soft, 2, true}, Case{&twoLights, 2, true}, Case{&parallel, 2, true}}) {
+    for (Case c :
+         {Case{&shiny, 1, true}, Case{&shiny, 3, true}, Case{&shinyParallel, 3, true},
+          Case{&mirrorAndWalls, 3, true}, Case{&wallShadow, 2, true}, Case{&twoMirrors, 3, false},
+          Case{&twoMirrors, 1, true}, Case{&glassFloor, 3, false}, Case{&matte, 3, true},
+          Case{&soft, 2, true}, Case{&twoLights, 2, true}, Case{&parallel, 2, true}}) {
         TracerOptions with, without;
         with.writeAov = without.writeAov = true;
         without.cullPlaneTiles = false;
