@@ -370,6 +370,27 @@ TEST(TracedTiles, EveryReflectionThatMeetsABoxComesFromACameraRayThroughItsMirro
     EXPECT_GT(reflections, size_t(40000));
 }
 
+// Calls visit(origin, dir) for one camera ray through each pixel of the tiles left without the
+// grid (at a random place in the pixel, as the shader's jitter could put it), once it has
+// checked that the ray meets none of the scene's spheres.
+template <typename Visit>
+void forEachPlaneTileRay(const gpu::GpuFrameParams &frame, const std::vector<uint8_t> &classes,
+                         const Scene &scene, std::mt19937 &rng, Visit visit) {
+    std::uniform_real_distribution<float> zeroOne(0.0f, 1.0f);
+    uint32_t tilesX = imageTiles(frame.image.x, frame.image.y).x1;
+    for (uint32_t py = 0; py < frame.image.y; ++py)
+        for (uint32_t px = 0; px < frame.image.x; ++px) {
+            if (classes[size_t(py / kTileSize) * tilesX + px / kTileSize] != kTilePlanesOnly)
+                continue;
+            glm::dvec3 o, d;
+            cameraRay(frame, glm::vec2(px, py) + glm::vec2(zeroOne(rng), zeroOne(rng)), o, d);
+            for (const Sphere &s : scene.spheres)
+                ASSERT_FALSE(segmentMeetsSphere(o, o + 1e4 * d, s))
+                    << "pixel " << px << "," << py << " was left without the grid";
+            visit(o, d);
+        }
+}
+
 // End to end, with real geometry: in every tile left without the grid, no camera ray meets a
 // sphere, and no shadow ray from its floor hits (from any point of a spherical light, leaving
 // from the offset origin as the shader does) meets one either.
@@ -398,33 +419,24 @@ TEST(TracedTiles, NoRayOfATileWithoutTheGridMeetsTheGridsGeometry) {
         ASSERT_TRUE(shadows.has_value());
         gpu::GpuFrameParams frame = frameFor(scene.camera, 96, 72);
         std::vector<uint8_t> classes = tileClasses(frame, extent, *shadows);
-        uint32_t tilesX = imageTiles(96, 72).x1;
         const Light &light = scene.lights[0];
-        for (uint32_t py = 0; py < 72; ++py)
-            for (uint32_t px = 0; px < 96; ++px) {
-                if (classes[size_t(py / kTileSize) * tilesX + px / kTileSize] != kTilePlanesOnly)
-                    continue;
-                glm::dvec3 o, d;
-                cameraRay(frame, glm::vec2(px, py) + glm::vec2(zeroOne(rng), zeroOne(rng)), o, d);
+        forEachPlaneTileRay(frame, classes, scene, rng, [&](glm::dvec3 o, glm::dvec3 d) {
+            if (d.y >= 0.0)
+                return;
+            glm::dvec3 hit = o + d * (-o.y / d.y);
+            double e = PRISM_OFFSET_RELATIVE *
+                       std::max({std::abs(hit.x), std::abs(hit.y), std::abs(hit.z)});
+            glm::dvec3 origin = hit + glm::dvec3(0.0, e, 0.0);
+            for (int k = 0; k < 4; ++k) {
+                glm::dvec3 u = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)) + 1e-9);
+                glm::dvec3 target = light.position + double(light.radius) * u;
+                ++shadowRays;
                 for (const Sphere &s : scene.spheres)
-                    ASSERT_FALSE(segmentMeetsSphere(o, o + 1e4 * d, s)) << "trial " << trial;
-                if (d.y >= 0.0)
-                    continue;
-                glm::dvec3 hit = o + d * (-o.y / d.y);
-                double e = PRISM_OFFSET_RELATIVE *
-                           std::max({std::abs(hit.x), std::abs(hit.y), std::abs(hit.z)});
-                glm::dvec3 origin = hit + glm::dvec3(0.0, e, 0.0);
-                for (int k = 0; k < 4; ++k) {
-                    glm::dvec3 u =
-                        glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)) + 1e-9);
-                    glm::dvec3 target = light.position + double(light.radius) * u;
-                    ++shadowRays;
-                    for (const Sphere &s : scene.spheres)
-                        ASSERT_FALSE(segmentMeetsSphere(origin, target, s))
-                            << "trial " << trial << ": pixel " << px << "," << py
-                            << " was left without the grid, but its shadow ray meets a sphere";
-                }
+                    ASSERT_FALSE(segmentMeetsSphere(origin, target, s))
+                        << "trial " << trial
+                        << ": a tile left without the grid, but a shadow ray meets a sphere";
             }
+        });
         planeTiles += size_t(std::count(classes.begin(), classes.end(), kTilePlanesOnly));
         tiles += classes.size();
     }
@@ -470,7 +482,6 @@ TEST(TracedTiles, NoRayOfAMirrorRoomsTileWithoutTheGridMeetsTheGridsGeometry) {
         ASSERT_TRUE(guards.has_value());
         gpu::GpuFrameParams frame = frameFor(scene.camera, 96, 72);
         std::vector<uint8_t> classes = tileClasses(frame, extent, needGridBoxes(*guards, frame));
-        uint32_t tilesX = imageTiles(96, 72).x1;
         const Light &light = scene.lights[0];
         auto nearestPlane = [&](glm::dvec3 o, glm::dvec3 d, size_t skip, double &t) {
             size_t best = SIZE_MAX;
@@ -496,38 +507,31 @@ TEST(TracedTiles, NoRayOfAMirrorRoomsTileWithoutTheGridMeetsTheGridsGeometry) {
                         << "trial " << trial << ": " << what;
             }
         };
-        for (uint32_t py = 0; py < 72; ++py)
-            for (uint32_t px = 0; px < 96; ++px) {
-                if (classes[size_t(py / kTileSize) * tilesX + px / kTileSize] != kTilePlanesOnly)
-                    continue;
-                glm::dvec3 o, d;
-                cameraRay(frame, glm::vec2(px, py) + glm::vec2(zeroOne(rng), zeroOne(rng)), o, d);
-                for (const Sphere &s : scene.spheres)
-                    ASSERT_FALSE(segmentMeetsSphere(o, o + 1e4 * d, s)) << "trial " << trial;
-                double t;
-                size_t k = nearestPlane(o, d, SIZE_MAX, t);
-                if (k == SIZE_MAX)
-                    continue;
-                glm::dvec3 hit = o + t * d, n(extent.planes[k]);
-                if (glm::dot(n, d) > 0.0)
-                    n = -n; // the side the camera sees
-                expectUnshadowed(hit, n, "a shadow ray from a plane hit meets a sphere");
-                if (k != 0)
-                    continue; // a matte wall: nothing more
-                glm::dvec3 r = d - 2.0 * glm::dot(d, n) * n, from = offsetFrom(hit, n);
-                for (const Sphere &s : scene.spheres)
-                    ASSERT_FALSE(segmentMeetsSphere(from, from + 1e4 * r, s))
-                        << "trial " << trial << ": a reflection off the floor meets a sphere";
-                double tw;
-                size_t w = nearestPlane(from, r, 0, tw);
-                if (w == SIZE_MAX)
-                    continue;
-                glm::dvec3 q = from + tw * r, nw(extent.planes[w]);
-                if (glm::dot(nw, r) > 0.0)
-                    nw = -nw;
-                ++wallReflections;
-                expectUnshadowed(q, nw, "a reflected wall point's shadow ray meets a sphere");
-            }
+        forEachPlaneTileRay(frame, classes, scene, rng, [&](glm::dvec3 o, glm::dvec3 d) {
+            double t;
+            size_t k = nearestPlane(o, d, SIZE_MAX, t);
+            if (k == SIZE_MAX)
+                return;
+            glm::dvec3 hit = o + t * d, n(extent.planes[k]);
+            if (glm::dot(n, d) > 0.0)
+                n = -n; // the side the camera sees
+            expectUnshadowed(hit, n, "a shadow ray from a plane hit meets a sphere");
+            if (k != 0)
+                return; // a matte wall: nothing more
+            glm::dvec3 r = d - 2.0 * glm::dot(d, n) * n, from = offsetFrom(hit, n);
+            for (const Sphere &s : scene.spheres)
+                ASSERT_FALSE(segmentMeetsSphere(from, from + 1e4 * r, s))
+                    << "trial " << trial << ": a reflection off the floor meets a sphere";
+            double tw;
+            size_t w = nearestPlane(from, r, 0, tw);
+            if (w == SIZE_MAX)
+                return;
+            glm::dvec3 q = from + tw * r, nw(extent.planes[w]);
+            if (glm::dot(nw, r) > 0.0)
+                nw = -nw;
+            ++wallReflections;
+            expectUnshadowed(q, nw, "a reflected wall point's shadow ray meets a sphere");
+        });
         planeTiles += size_t(std::count(classes.begin(), classes.end(), kTilePlanesOnly));
         tiles += classes.size();
     }
