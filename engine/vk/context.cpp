@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "vk/keep_libraries_loaded.h"
 #include "vk/vk_check.h"
 
 namespace prism::vk {
@@ -136,6 +137,7 @@ void Context::createInstance(const ContextOptions &options) {
     if (result == VK_ERROR_INCOMPATIBLE_DRIVER)
         throw Error(std::string("No usable Vulkan driver found. ") + kInstallHint);
     VK_CHECK(result);
+    keepVulkanLibrariesLoaded(); // sanitizer builds: the driver stays for LeakSanitizer
 
     if (options.validation) {
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
