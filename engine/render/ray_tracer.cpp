@@ -222,8 +222,6 @@ void RayTracer::recordSamples(VkCommandBuffer commands, const Camera &camera, ui
     gpu::GpuFrameParams params = frameParams(camera, samplesPerPixel);
     // The same camera for every sample: which tiles may hit something is found once.
     TileLists lists = frameTiles(params);
-    lastTiles_ = {lists.full, lists.traced - lists.full,
-                  uint32_t(lists.tiles.size()) - lists.traced};
     recordTileList(commands, lists);
     for (uint32_t s = firstSample; s < firstSample + count; ++s) {
         setFrameSample(params, s);
@@ -362,7 +360,9 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
     result.rays = counted.rays;
     result.loopCutPixels = counted.loopCutPixels;
     result.phaseNs = counted.phaseNs;
-    result.tiles = lastTiles_;
+    // Counted from the classes the frame was traced with (FrameResult::tiles' order).
+    for (uint8_t c : lastTileClasses_)
+        result.tiles[c == kTileFull ? 0 : c == kTilePlanesOnly ? 1 : 2] += 1;
     if (result.loopCutPixels > 0) {
         FrameResult resumed = renderResumable(camera, samplesPerPixel, progress); // switches
         resumed.gpuMs += result.gpuMs; // the frame's time includes the pass that was cut

@@ -186,7 +186,6 @@ private:
     // What tiles are classed with planes only by (render/plane_shadows.h), where they are:
     // TracerOptions::cullPlaneTiles, planeTilesMode, and shadows with a bound.
     std::optional<PlaneTileGuards> planeGuards_;
-    std::array<uint32_t, 3> lastTiles_{};
     std::vector<uint8_t> lastTileClasses_; // FrameResult::tiles of the last recordSamples
 };
 

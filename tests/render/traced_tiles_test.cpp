@@ -370,6 +370,17 @@ TEST(TracedTiles, EveryReflectionThatMeetsABoxComesFromACameraRayThroughItsMirro
     EXPECT_GT(reflections, size_t(40000));
 }
 
+// `count` spheres of radius 0.15 to 0.15 + `spread` over [-3, 3]^2 of the floor y = 0, each
+// clear of it by up to 1.2.
+void addSpheresAboveTheFloor(Scene &scene, std::mt19937 &rng, int count, double spread) {
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), zeroOne(0.0, 1.0);
+    for (int i = 0; i < count; ++i) {
+        double r = 0.15 + spread * zeroOne(rng);
+        scene.spheres.push_back(
+            Sphere{{3.0 * unit(rng), r + 1.2 * zeroOne(rng), 3.0 * unit(rng)}, float(r), 0});
+    }
+}
+
 // Calls visit(origin, dir) for one camera ray through each pixel of the tiles left without the
 // grid (at a random place in the pixel, as the shader's jitter could put it), once it has
 // checked that the ray meets none of the scene's spheres.
@@ -401,11 +412,7 @@ TEST(TracedTiles, NoRayOfATileWithoutTheGridMeetsTheGridsGeometry) {
     for (int trial = 0; trial < 12; ++trial) {
         Scene scene = sceneWithDefaultMaterial();
         scene.planes.push_back(Plane{{0.0, 0.0, 0.0}, {0.0f, 1.0f, 0.0f}, 0});
-        for (int i = 0; i < 6; ++i) {
-            double r = 0.15 + 0.4 * zeroOne(rng);
-            scene.spheres.push_back(
-                Sphere{{3.0 * unit(rng), r + 1.2 * zeroOne(rng), 3.0 * unit(rng)}, float(r), 0});
-        }
+        addSpheresAboveTheFloor(scene, rng, 6, 0.4);
         scene.lights.push_back(Light{{6.0 * unit(rng), 5.0 + 2.0 * zeroOne(rng), 6.0 * unit(rng)},
                                      {1.0f, 1.0f, 1.0f},
                                      trial % 2 == 0 ? 0.0f : 0.7f});
@@ -462,11 +469,7 @@ TEST(TracedTiles, NoRayOfAMirrorRoomsTileWithoutTheGridMeetsTheGridsGeometry) {
         scene.planes.push_back(Plane{{0.0, 0.0, 0.0}, {0.0f, 1.0f, 0.0f}, mirror});
         scene.planes.push_back(Plane{{0.0, 0.0, -4.0}, {0.0f, 0.0f, 1.0f}, 0});
         scene.planes.push_back(Plane{{-4.5, 0.0, 0.0}, {1.0f, 0.0f, 0.0f}, 0});
-        for (int i = 0; i < 5; ++i) {
-            double r = 0.15 + 0.35 * zeroOne(rng);
-            scene.spheres.push_back(
-                Sphere{{3.0 * unit(rng), r + 1.2 * zeroOne(rng), 3.0 * unit(rng)}, float(r), 0});
-        }
+        addSpheresAboveTheFloor(scene, rng, 5, 0.35);
         // In front of the spheres as the walls see it (nearer the camera): bounded shadows.
         scene.lights.push_back(
             Light{{4.6 + 2.0 * zeroOne(rng), 5.0 + 2.0 * zeroOne(rng), 4.6 + 2.0 * zeroOne(rng)},
