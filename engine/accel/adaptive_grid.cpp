@@ -34,14 +34,56 @@ uint32_t chooseShift(const glm::ivec3 &topResolution, uint32_t maxDepth) {
     return shift;
 }
 
+// A primitive's bounding box in voxels from the grid's low corner, in fixed point (1/256 of a
+// voxel, rounded outwards): every level finds the parts it meets from this by a subtraction and
+// a shift, with its own slack, instead of the binner's double division for every candidate.
+constexpr int kVoxelFractionBits = 8;
+struct VoxelBounds {
+    glm::ivec3 lo, hi;
+};
+
+// Fixed-point voxel coordinates far outside the grid are clamped: the ranges clamp them anyway.
+inline int toFixedVoxels(double voxels, bool roundUp) {
+    double v = std::clamp(voxels, -double(1 << 17), double(1 << 17)) * (1 << kVoxelFractionBits);
+    return int(roundUp ? std::ceil(v) : std::floor(v));
+}
+
+// The parts each primitive meets at every level, by bounding box.
+class PartRanges {
+public:
+    PartRanges(const Grid &grid, double magnitude) {
+        glm::dvec3 voxel(grid.voxelSize());
+        for (uint32_t k = 0; k < slack_.size(); ++k) {
+            // CellBinner's slack for parts of 2^k voxels, in voxels, rounded up to the fixed
+            // point, and one more unit for the rounding of the bounds: so the ranges hold every
+            // part the binner's would.
+            glm::dvec3 slack = (1e-4 * voxel * double(1u << k) + 4e-7 * magnitude) / voxel;
+            for (int a = 0; a < 3; ++a)
+                slack_[k][a] = toFixedVoxels(slack[a], true) + 1;
+        }
+    }
+
+    // The parts [lo, hi] of the window `parts` (cells of 2^partShift voxels) that `b` meets.
+    CellRange range(const VoxelBounds &b, const Lattice &parts, uint32_t partShift) const {
+        int shift = int(partShift) + kVoxelFractionBits; // >> on int floors, negatives too
+        glm::ivec3 lo = (b.lo - slack_[partShift]) >> shift;
+        glm::ivec3 hi = (b.hi + slack_[partShift]) >> shift;
+        return {glm::clamp(lo, parts.lo, parts.hi - 1), glm::clamp(hi, parts.lo, parts.hi - 1)};
+    }
+
+private:
+    std::array<glm::ivec3, 17> slack_{}; // 16-bit voxel coordinates: at most 16 halvings
+};
+
 class Splitter {
 public:
     Splitter(Fragment &out, const Grid &grid, const FinitePrimitives &primitives,
-             const std::vector<Aabb> &bounds, double density, double magnitude, size_t budget,
+             const std::vector<Aabb> &bounds, const std::vector<VoxelBounds> &voxels,
+             const PartRanges &ranges, double density, double magnitude, size_t budget,
              const AdaptiveStyle &style)
-        : out_(out), grid_(grid), primitives_(primitives), bounds_(bounds), density_(density),
-          magnitude_(magnitude), voxelSize_(glm::dvec3(grid.voxelSize())), budget_(budget),
-          style_(style) {}
+        : out_(out), grid_(grid), primitives_(primitives), bounds_(bounds), voxels_(voxels),
+          ranges_(ranges), density_(density), magnitude_(magnitude),
+          voxelSize_(glm::dvec3(grid.voxelSize())), budget_(budget), style_(style) {}
 
     // Makes entry `entry` the cell, or the tree of cells, of the box of 2^sizeShift voxels per
     // axis from voxelMin, which `refs` overlap.
@@ -64,8 +106,6 @@ public:
         // they are needed, instead of being repeated at every level and candidate.
         uint32_t best = style_.costModel ? 0 : split;
         double bestCost = double(n);
-        if (!style_.costModel)
-            referencesAfter(refs, voxelMin, sizeShift, split); // the ranges binning reads
         for (uint32_t d = split; d >= 1 && style_.costModel; --d) {
             double parts = double(1u << d);
             // Each ref lands in one part at least: a split whose cost with n references does
@@ -86,9 +126,10 @@ public:
         split = best;
         uint32_t childShift = sizeShift - split, parts = 1u << split;
         Lattice children = childLattice(voxelMin, sizeShift, split);
-        // Each part's list, by bounding box, sorted by the ranges found when the split was
-        // priced.
-        PartLists childRefs = sortIntoParts(ranges_[split], children, refs);
+        // Each part's list, by bounding box.
+        PartLists childRefs = sortIntoParts(children, refs, [&](size_t i) {
+            return ranges_.range(voxels_[refs[i]], children, childShift);
+        });
         // A split that leaves some part with every primitive may still help further down (a
         // small cluster in a big cell), but three in a row mean the primitives cannot be told
         // apart (all in one point, a fan around one vertex): the cell stays whole. This also
@@ -132,18 +173,14 @@ private:
         return l;
     }
 
-    // References over all parts of a split, by bounding box. Keeps each ref's range of parts
-    // in ranges_[split] for the binning, should this split be made.
+    // References over all parts of a split, by bounding box.
     size_t referencesAfter(std::span<const uint32_t> refs, glm::ivec3 voxelMin, uint32_t sizeShift,
-                           uint32_t split) {
-        CellBinner binner(childLattice(voxelMin, sizeShift, split));
-        std::vector<CellRange> &ranges = ranges_[split];
-        ranges.resize(refs.size());
+                           uint32_t split) const {
+        Lattice parts = childLattice(voxelMin, sizeShift, split);
+        uint32_t partShift = sizeShift - split;
         size_t references = 0;
-        for (size_t i = 0; i < refs.size(); ++i) {
-            binner.boundsRange(bounds_[refs[i]], ranges[i].lo, ranges[i].hi);
-            references += ranges[i].cells();
-        }
+        for (uint32_t id : refs)
+            references += ranges_.range(voxels_[id], parts, partShift).cells();
         return references;
     }
 
@@ -237,13 +274,13 @@ private:
     const Grid &grid_;
     const FinitePrimitives &primitives_;
     const std::vector<Aabb> &bounds_; // each primitive's, computed once
+    const std::vector<VoxelBounds> &voxels_;
+    const PartRanges &ranges_;
     double density_;
     double magnitude_;
     glm::dvec3 voxelSize_;
     size_t budget_;
     AdaptiveStyle style_;
-    // Each ref's range of parts for each candidate split (index: split), from pricing to binning.
-    std::array<std::vector<CellRange>, kAdaptiveMaxSplit + 1> ranges_;
 };
 
 } // namespace
@@ -252,22 +289,29 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
                         const AdaptiveStyle &style) {
     grid.shift = chooseShift(grid.resolution, style.maxDepth);
     Lattice top = wholeGrid(grid);
-    // Bounding boxes, computed once: every level above the leaves bins by them, as the top
-    // grid does here (their ranges found in parallel, then sorted: ids ascending in a cell).
+    // Bounding boxes, also in voxels, computed once, in parallel: every level above the leaves
+    // bins by them, as the top grid does here (sorted stably: ids ascending in a cell, as the
+    // expansion's subset tests need).
     std::vector<Aabb> bounds(primitives.count());
-    std::vector<CellRange> ranges(primitives.count());
+    std::vector<VoxelBounds> voxels(primitives.count());
     std::vector<uint32_t> ids(primitives.count());
-    CellBinner binner(top);
+    glm::dvec3 origin(grid.boundsMin), voxel(grid.voxelSize());
     constexpr size_t kBlock = 4096;
     parallelFor((bounds.size() + kBlock - 1) / kBlock, [&](size_t block) {
         for (size_t id = block * kBlock; id < std::min(bounds.size(), (block + 1) * kBlock); ++id) {
             bounds[id] = primitives.bounds(uint32_t(id));
-            binner.boundsRange(bounds[id], ranges[id].lo, ranges[id].hi);
+            glm::dvec3 lo = (bounds[id].min - origin) / voxel,
+                       hi = (bounds[id].max - origin) / voxel;
+            for (int a = 0; a < 3; ++a) {
+                voxels[id].lo[a] = toFixedVoxels(lo[a], false);
+                voxels[id].hi[a] = toFixedVoxels(hi[a], true);
+            }
             ids[id] = uint32_t(id);
         }
     });
-    PartLists topRefs = sortIntoParts(ranges, top, ids);
-    ranges = {};
+    PartRanges ranges(grid, top.magnitude);
+    PartLists topRefs =
+        sortIntoParts(top, ids, [&](size_t i) { return ranges.range(voxels[i], top, grid.shift); });
     ids = {};
 
     // Cells and entries at most ~64 per primitive a top cell holds (and a floor for small
@@ -279,8 +323,8 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
                         int(t / (uint64_t(grid.resolution.x) * uint32_t(grid.resolution.y))));
         std::span<const uint32_t> refs = topRefs.list(t);
         size_t budget = 64 * refs.size() + 4096;
-        Splitter splitter(fragments[t], grid, primitives, bounds, double(options.density),
-                          top.magnitude, budget, style);
+        Splitter splitter(fragments[t], grid, primitives, bounds, voxels, ranges,
+                          double(options.density), top.magnitude, budget, style);
         splitter.build(0, cell << int(grid.shift), grid.shift, 0, 0, refs);
     });
     joinFragments(grid, fragments);

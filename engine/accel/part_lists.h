@@ -33,12 +33,12 @@ struct PartLists {
     bool empty(size_t part) const { return start[part + 1] == start[part]; }
 };
 
-// refs[i] goes to every part of `parts` in ranges[i].
-inline PartLists sortIntoParts(const std::vector<CellRange> &ranges, const Lattice &parts,
-                               std::span<const uint32_t> refs) {
+// refs[i] goes to every part of `parts` in rangeOf(i) (a CellRange).
+template <typename RangeOf>
+PartLists sortIntoParts(const Lattice &parts, std::span<const uint32_t> refs, RangeOf rangeOf) {
     auto forEachPart = [&](auto visit) {
-        for (size_t i = 0; i < ranges.size(); ++i) {
-            const CellRange &r = ranges[i];
+        for (size_t i = 0; i < refs.size(); ++i) {
+            const CellRange r = rangeOf(i);
             for (int z = r.lo.z; z <= r.hi.z; ++z)
                 for (int y = r.lo.y; y <= r.hi.y; ++y)
                     for (int x = r.lo.x; x <= r.hi.x; ++x)

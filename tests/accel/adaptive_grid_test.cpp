@@ -94,6 +94,40 @@ TEST(AdaptiveGrid, CellsListExactlyTheOverlappingPrimitives) {
     }
 }
 
+// The shader's float walk may put a hit just outside the cell it tests, by up to the rounding
+// of the coordinates: so a cell also lists what lies within the binner's slack of its box
+// (4e-7 of the largest coordinate, and more). Far from the origin that slack is a few percent
+// of a fine cell, and many primitives lie that close to a cell they do not overlap.
+TEST(AdaptiveGrid, CellsListWhatLiesWithinTheSlack) {
+    Scene scene = test::randomSpheresAndTriangles(47, 150, 300, 1.0);
+    for (Sphere &s : scene.spheres)
+        s.center.x += 10000.0f;
+    for (Triangle &t : scene.triangles)
+        for (glm::dvec3 &p : t.p)
+            p.x += 10000.0;
+    Grid g = adaptive(scene);
+    glm::dvec3 lo(g.boundsMin), voxel(g.voxelSize());
+    double magnitude = std::max(std::abs(double(g.boundsMax.x)), std::abs(double(g.boundsMin.x)));
+    glm::dvec3 margin(0.9 * 4e-7 * magnitude);
+    PrimitiveIds ids(scene);
+    size_t withinTheSlackOnly = 0;
+    for (uint32_t c = 0; c < g.cellBoxes.size(); ++c) {
+        glm::ivec3 vmin, vmax;
+        unpackCellBox(g.cellBoxes[c], vmin, vmax);
+        glm::dvec3 boxMin = lo + glm::dvec3(vmin) * voxel, boxMax = lo + glm::dvec3(vmax) * voxel;
+        auto first = g.cellPrimitives.begin() + g.cellStart[c];
+        auto last = g.cellPrimitives.begin() + g.cellStart[c + 1];
+        for (uint32_t id = 0; id < ids.count(); ++id) {
+            if (!test::overlapsBox(scene, ids, id, boxMin - margin, boxMax + margin))
+                continue;
+            withinTheSlackOnly += !test::overlapsBox(scene, ids, id, boxMin, boxMax);
+            ASSERT_TRUE(std::binary_search(first, last, id))
+                << "primitive " << id << " within the slack of cell " << c << " is not listed";
+        }
+    }
+    EXPECT_GT(withinTheSlackOnly, 40u) << "the scene puts primitives within the slack of cells";
+}
+
 // A cluster 500 times smaller than its room still gets cells of its own size: its fullest
 // cell holds a few primitives, where one regular grid of the same budget holds hundreds.
 TEST(AdaptiveGrid, FollowsAClusterInARoom) {

@@ -62,18 +62,24 @@ inline Scene clusterInARoom(unsigned seed, int clusterTriangles, int clusterSphe
 
 // Checks one cell's list against its box: every primitive that overlaps the box is listed, and
 // a listed one overlaps the box grown by 1% (the binner's slack is far smaller).
+// Whether primitive `id` (a sphere or a triangle) overlaps the box [a, b].
+inline bool overlapsBox(const Scene &scene, const PrimitiveIds &ids, uint32_t id,
+                        const glm::dvec3 &a, const glm::dvec3 &b) {
+    PrimitiveIds::Decoded p = ids.decode(id);
+    if (p.kind == gpu::kKindSphere) {
+        const Sphere &s = scene.spheres[p.index];
+        return sphereOverlapsBox(s.center, s.radius, a, b);
+    }
+    const Triangle &t = scene.triangles[p.index];
+    return triangleOverlapsBox(t.p[0], t.p[1], t.p[2], a, b);
+}
+
 inline void expectCellListsExactly(const Scene &scene, const glm::dvec3 &lo, const glm::dvec3 &hi,
                                    const std::vector<uint32_t> &listed) {
     PrimitiveIds ids(scene);
     glm::dvec3 wide = 0.01 * (hi - lo);
     auto overlaps = [&](uint32_t id, glm::dvec3 a, glm::dvec3 b) {
-        PrimitiveIds::Decoded p = ids.decode(id);
-        if (p.kind == gpu::kKindSphere) {
-            const Sphere &s = scene.spheres[p.index];
-            return sphereOverlapsBox(s.center, s.radius, a, b);
-        }
-        const Triangle &t = scene.triangles[p.index];
-        return triangleOverlapsBox(t.p[0], t.p[1], t.p[2], a, b);
+        return overlapsBox(scene, ids, id, a, b);
     };
     EXPECT_TRUE(std::is_sorted(listed.begin(), listed.end()));
     for (uint32_t id = 0; id < ids.count(); ++id) {
