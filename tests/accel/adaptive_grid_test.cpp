@@ -2,6 +2,8 @@
 // that holds a voxel, each cell lists exactly the primitives overlapping its box, and it adapts
 // to uneven scenes. (Walks against brute force: grid_walk_test.cpp.)
 #include <algorithm>
+#include <climits>
+#include <functional>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -77,11 +79,48 @@ TEST(AdaptiveGrid, EmptyPartsOfASplitAreMerged) {
         << "merging saves a quarter of the cells at least";
 }
 
-// Every primitive is listed in each cell its box overlaps, and only near such cells.
+// Each cell's box as built, before the expansion grew it: the union of the voxel-map nodes whose
+// leaf entries point to the cell (a merged cell has several).
+std::vector<std::pair<glm::ivec3, glm::ivec3>> builtBoxes(const Grid &g) {
+    std::vector<std::pair<glm::ivec3, glm::ivec3>> boxes(g.cellBoxes.size(),
+                                                         {glm::ivec3(INT_MAX), glm::ivec3(0)});
+    std::function<void(uint32_t, glm::ivec3, int)> visit = [&](uint32_t index, glm::ivec3 lo,
+                                                               int shift) {
+        uint32_t entry = g.entries[index];
+        int split = int(entry & 15u);
+        if (split == 0) {
+            auto &box = boxes[entry >> 4];
+            box.first = glm::min(box.first, lo);
+            box.second = glm::max(box.second, lo + (1 << shift));
+            return;
+        }
+        int childShift = shift - split, parts = 1 << split;
+        for (int i = 0; i < parts * parts * parts; ++i) {
+            glm::ivec3 part(i % parts, i / parts % parts, i / (parts * parts));
+            visit((entry >> 4) + uint32_t(i), lo + (part << childShift), childShift);
+        }
+    };
+    for (uint32_t t = 0; t < g.topCellCount(); ++t) {
+        glm::ivec3 top(int(t % uint32_t(g.resolution.x)),
+                       int(t / uint32_t(g.resolution.x) % uint32_t(g.resolution.y)),
+                       int(t / (uint32_t(g.resolution.x) * uint32_t(g.resolution.y))));
+        visit(t, top << int(g.shift), int(g.shift));
+    }
+    return boxes;
+}
+
+// Every primitive is listed in each cell its (expanded) box overlaps, and a listed one overlaps
+// the cell's box as built, grown by twice the binner's slack: the exact tests, not bounding
+// boxes, decide (the room's walls are triangles whose bounding boxes cover whole faces).
 TEST(AdaptiveGrid, CellsListExactlyTheOverlappingPrimitives) {
     Scene scene = test::clusterInARoom(43, 400, 60);
     Grid g = adaptive(scene);
     glm::dvec3 lo(g.boundsMin), voxel(g.voxelSize());
+    double magnitude = std::max({std::abs(double(g.boundsMin.x)), std::abs(double(g.boundsMax.x)),
+                                 std::abs(double(g.boundsMin.y)), std::abs(double(g.boundsMax.y)),
+                                 std::abs(double(g.boundsMin.z)), std::abs(double(g.boundsMax.z))});
+    std::vector<std::pair<glm::ivec3, glm::ivec3>> built = builtBoxes(g);
+    PrimitiveIds ids(scene);
     for (uint32_t c = 0; c < g.cellBoxes.size(); ++c) {
         glm::ivec3 vmin, vmax;
         unpackCellBox(g.cellBoxes[c], vmin, vmax);
@@ -89,6 +128,12 @@ TEST(AdaptiveGrid, CellsListExactlyTheOverlappingPrimitives) {
                                      g.cellPrimitives.begin() + g.cellStart[c + 1]);
         test::expectCellListsExactly(scene, lo + glm::dvec3(vmin) * voxel,
                                      lo + glm::dvec3(vmax) * voxel, listed);
+        glm::dvec3 builtMin = lo + glm::dvec3(built[c].first) * voxel;
+        glm::dvec3 builtMax = lo + glm::dvec3(built[c].second) * voxel;
+        glm::dvec3 slack = 2.0 * (1e-4 * (builtMax - builtMin) + glm::dvec3(4e-7 * magnitude));
+        for (uint32_t id : listed)
+            ASSERT_TRUE(test::overlapsBox(scene, ids, id, builtMin - slack, builtMax + slack))
+                << "cell " << c << " lists primitive " << id << ", which misses its box as built";
         if (HasFatalFailure())
             return;
     }
