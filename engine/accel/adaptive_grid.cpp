@@ -10,6 +10,7 @@
 
 #include "accel/cell_binner.h"
 #include "accel/cell_expansion.h"
+#include "accel/empty_merge.h"
 #include "accel/grid_fragments.h"
 #include "accel/part_lists.h"
 #include "core/error.h"
@@ -211,52 +212,22 @@ private:
         out_.entries[entry] = uint32_t(cell) << 4;
     }
 
-    // Makes the empty parts of a split into few cells: from each empty part not yet taken, in
-    // x-fastest order, a box grows along x, then y, then z over empty parts not yet taken, and
-    // becomes one cell whose entries all point to it (the merge of Pérard-Gayot et al. for the
-    // commonest case). Surfaces leave most parts of a split empty; one cell per part made most
-    // of the adaptive grid's cells, memory and expansion work.
+    // Makes the empty parts of a split into few cells (accel/empty_merge.h), each one cell
+    // whose entries all point to it.
     void mergeEmptyParts(uint32_t first, const Lattice &parts, uint32_t childShift,
                          const PartLists &childRefs) {
         glm::ivec3 size = parts.size();
-        std::vector<bool> taken(parts.count());
-        auto untaken = [&](glm::ivec3 c) { // an empty part not yet in a merged cell
-            uint32_t i = uint32_t(c.x + size.x * (c.y + size.y * c.z));
-            return childRefs.empty(i) && !taken[i];
-        };
-        auto untakenBox = [&](glm::ivec3 lo, glm::ivec3 hi) {
-            for (int z = lo.z; z < hi.z; ++z)
-                for (int y = lo.y; y < hi.y; ++y)
-                    for (int x = lo.x; x < hi.x; ++x)
-                        if (!untaken({x, y, z}))
-                            return false;
-            return true;
-        };
-        for (int z = 0; z < size.z; ++z)
-            for (int y = 0; y < size.y; ++y)
-                for (int x = 0; x < size.x; ++x) {
-                    glm::ivec3 lo(x, y, z), hi = lo + 1;
-                    if (!untaken(lo))
-                        continue;
-                    for (int axis = 0; axis < 3; ++axis)
-                        for (;;) {
-                            glm::ivec3 layerLo = lo, layerHi = hi;
-                            layerLo[axis] = hi[axis];
-                            layerHi[axis] = hi[axis] + 1;
-                            if (hi[axis] >= size[axis] || !untakenBox(layerLo, layerHi))
-                                break;
-                            ++hi[axis];
-                        }
-                    size_t cell = newCell((parts.lo + lo) << int(childShift),
-                                          (parts.lo + hi) << int(childShift), 0);
-                    for (int cz = lo.z; cz < hi.z; ++cz)
-                        for (int cy = lo.y; cy < hi.y; ++cy)
-                            for (int cx = lo.x; cx < hi.x; ++cx) {
-                                uint32_t i = uint32_t(cx + size.x * (cy + size.y * cz));
-                                taken[i] = true;
-                                out_.entries[first + i] = uint32_t(cell) << 4;
-                            }
-                }
+        mergeEmptyBoxes(
+            size, [&](uint32_t i) { return childRefs.empty(i); },
+            [&](glm::ivec3 lo, glm::ivec3 hi) {
+                size_t cell = newCell((parts.lo + lo) << int(childShift),
+                                      (parts.lo + hi) << int(childShift), 0);
+                for (int z = lo.z; z < hi.z; ++z)
+                    for (int y = lo.y; y < hi.y; ++y)
+                        for (int x = lo.x; x < hi.x; ++x)
+                            out_.entries[first + uint32_t(x + size.x * (y + size.y * z))] =
+                                uint32_t(cell) << 4;
+            });
     }
 
     // Appends a cell with the given box whose `count` primitives the caller appends.
@@ -314,10 +285,30 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
         sortIntoParts(top, ids, [&](size_t i) { return ranges.range(voxels[i], top, grid.shift); });
     ids = {};
 
+    // Empty top cells are merged as a split's empty parts are: the first top cell of each box
+    // makes the box's cell, and the others' entries point to it (grid_fragments.h). Where most
+    // top cells are empty (a large mesh's top grid is fine), their space is then a few large
+    // cells, which the expansion grows further, instead of many that it grows three steps.
+    std::vector<Fragment> fragments(top.count());
+    if (style.mergeEmptyParts)
+        mergeEmptyBoxes(
+            top.size(), [&](uint32_t t) { return topRefs.empty(t); },
+            [&](glm::ivec3 lo, glm::ivec3 hi) {
+                uint32_t first = top.local(lo);
+                fragments[first].cellBoxes.push_back(
+                    packCellBox(lo << int(grid.shift), hi << int(grid.shift)));
+                fragments[first].cellCounts.push_back(0);
+                for (int z = lo.z; z < hi.z; ++z)
+                    for (int y = lo.y; y < hi.y; ++y)
+                        for (int x = lo.x; x < hi.x; ++x)
+                            if (uint32_t t = top.local({x, y, z}); t != first)
+                                fragments[t].sameCellAs = first;
+            });
     // Cells and entries at most ~64 per primitive a top cell holds (and a floor for small
     // cells): a safety net on memory and build time, far above what the cost model asks for.
-    std::vector<Fragment> fragments(top.count());
     parallelFor(top.count(), [&](size_t t) {
+        if (!fragments[t].cellBoxes.empty() || fragments[t].sameCellAs >= 0)
+            return; // a merged empty top cell
         glm::ivec3 cell(int(t % uint32_t(grid.resolution.x)),
                         int(t / uint32_t(grid.resolution.x) % uint32_t(grid.resolution.y)),
                         int(t / (uint64_t(grid.resolution.x) * uint32_t(grid.resolution.y))));

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <string>
 #include <vector>
 
 #include "accel/grid_walk.h"
+#include "core/error.h"
 #include "core/parallel_for.h"
 
 namespace prism {
@@ -65,6 +67,12 @@ bool eachCellInLayer(const Grid &grid, const std::vector<CellRecord> &cells, glm
         corner[u] = r.u0;
         corner[w] = r.w0;
         const CellRecord &n = cells[adaptiveCellAt(grid, corner)];
+        // The cell the map gives holds the corner, so the rectangle shrinks: a map that
+        // disagreed with the boxes (a bug) would keep it as it is, for ever.
+        if (n.max(u) <= r.u0 || n.max(w) <= r.w0)
+            throw Error("adaptive grid: the voxel map and the cell boxes disagree at voxel (" +
+                        std::to_string(corner.x) + ", " + std::to_string(corner.y) + ", " +
+                        std::to_string(corner.z) + ")");
         if (!visit(n))
             return false;
         int coveredU = std::min(r.u1, n.max(u)), coveredW = std::min(r.w1, n.max(w));

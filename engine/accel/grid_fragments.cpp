@@ -66,7 +66,10 @@ void joinFragments(Grid &grid, std::vector<Fragment> &fragments) {
     constexpr size_t kBlock = 256;
     parallelFor((fragments.size() + kBlock - 1) / kBlock, [&](size_t block) {
         for (size_t t = block * kBlock; t < std::min(fragments.size(), (block + 1) * kBlock); ++t) {
-            copyFragment(grid, uint32_t(t), fragments[t], bases[t]);
+            if (fragments[t].sameCellAs >= 0)
+                grid.entries[t] = uint32_t(bases[size_t(fragments[t].sameCellAs)].cell) << 4;
+            else
+                copyFragment(grid, uint32_t(t), fragments[t], bases[t]);
             fragments[t] = {};
         }
     });

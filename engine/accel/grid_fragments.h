@@ -24,6 +24,9 @@ struct Fragment {
     std::vector<uint32_t> cellPrimitives;
     uint32_t depth = 0;
     uint32_t maxPerCell = 0;
+    // An empty top cell merged with others (accel/empty_merge.h): the top cell whose fragment's
+    // first cell is this top cell's too; this fragment then holds nothing else. -1: none.
+    int64_t sameCellAs = -1;
 };
 
 // Fills grid.entries, cellBoxes, cellStart, cellPrimitives, depth and maxPerCell from one

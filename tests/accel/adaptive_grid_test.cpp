@@ -79,6 +79,29 @@ TEST(AdaptiveGrid, EmptyPartsOfASplitAreMerged) {
         << "merging saves a quarter of the cells at least";
 }
 
+// Empty top cells are merged too: in a room with a small cluster most top cells are empty, and
+// they become a few cells, each the box of the top cells whose entries point to it.
+TEST(AdaptiveGrid, EmptyTopCellsAreMerged) {
+    Grid g = adaptive(test::clusterInARoom(48, 2000, 100));
+    expectWellFormed(g);
+    std::vector<uint32_t> topEntriesOf(g.cellBoxes.size(), 0);
+    size_t emptyTopCells = 0;
+    for (uint32_t t = 0; t < g.topCellCount(); ++t)
+        if ((g.entries[t] & 15u) == 0) {
+            uint32_t cell = g.entries[t] >> 4;
+            ++topEntriesOf[cell];
+            emptyTopCells += g.cellStart[cell + 1] == g.cellStart[cell];
+        }
+    size_t mergedCells = 0;
+    for (uint32_t c = 0; c < g.cellBoxes.size(); ++c)
+        if (topEntriesOf[c] > 1) {
+            ++mergedCells;
+            EXPECT_EQ(g.cellStart[c + 1], g.cellStart[c]) << "only empty top cells are merged";
+        }
+    EXPECT_GT(emptyTopCells, 40u) << "of " << g.topCellCount() << " top cells";
+    EXPECT_LT(mergedCells * 4, emptyTopCells) << "the empty top cells are a few cells";
+}
+
 // Each cell's box as built, before the expansion grew it: the union of the voxel-map nodes whose
 // leaf entries point to the cell (a merged cell has several).
 std::vector<std::pair<glm::ivec3, glm::ivec3>> builtBoxes(const Grid &g) {
