@@ -287,8 +287,9 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
 
     // Empty top cells are merged as a split's empty parts are: the first top cell of each box
     // makes the box's cell, and the others' entries point to it (grid_fragments.h). Where most
-    // top cells are empty (a large mesh's top grid is fine), their space is then a few large
-    // cells, which the expansion grows further, instead of many that it grows three steps.
+    // top cells are empty (the top grid of a large mesh has many small ones), their space is
+    // then a few large cells, which the expansion grows further, instead of many cells that it
+    // grows by three neighbours at most.
     std::vector<Fragment> fragments(top.count());
     if (style.mergeEmptyParts)
         mergeEmptyBoxes(
