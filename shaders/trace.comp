@@ -128,7 +128,8 @@ void pushRay(vec3 origin, vec3 dir, vec3 weight, uint depth) {
         gBouncePushNs += profileElapsed(start);
 }
 
-vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
+// The camera ray's grid walk starts at cameraFrom (its tile's start distance).
+vec3 traceSample(vec3 origin, vec3 dir, float cameraFrom, uint pixelIndex, uint sampleIndex) {
     uint maxDepth = frameMaxDepth(frame);
     vec3 radiance = vec3(0.0);
     pushRay(origin, dir, vec3(1.0), 1u);
@@ -141,7 +142,8 @@ vec3 traceSample(vec3 origin, vec3 dir, uint pixelIndex, uint sampleIndex) {
             gSecondaryRays += 1u;
         Hit hit;
         uint64_t walkStart = profileClock();
-        bool hitSomething = traceClosest(ray.origin, ray.dir, kInfinity, hit);
+        bool hitSomething =
+            traceClosest(ray.origin, ray.dir, ray.depth == 1u ? cameraFrom : 0.0, kInfinity, hit);
         profileAdd(ray.depth > 1u ? kPhaseSecondaryWalk : kPhasePrimaryWalk, walkStart);
         uint64_t shadingStart = profileClock();
         if (!hitSomething) {
@@ -223,6 +225,7 @@ void main() {
     // The pixel: resumable tracing dispatches a rectangle of tiles from the frame's tile origin;
     // otherwise each workgroup takes one entry of the frame's tile list (render/traced_tiles.h).
     uvec2 pixel;
+    float cameraFrom = 0.0; // where camera rays' grid walks start
     if (RESUMABLE) {
         pixel = uvec2(frameTileOriginX(frame), frameTileOriginY(frame)) + gl_GlobalInvocationID.xy;
     } else {
@@ -230,7 +233,9 @@ void main() {
                      gl_WorkGroupID.x;
         if (entry >= frameTileListEnd(frame))
             return; // the last row of workgroups runs past the range: the whole group leaves
-        pixel = tileListOrigin(entry) + gl_LocalInvocationID.xy;
+        uvec2 tile = tileListEntry(entry);
+        pixel = tileListOrigin(tile) + gl_LocalInvocationID.xy;
+        cameraFrom = tileListStart(tile);
     }
     profileStart();
     uint64_t invocationStart = profileClock();
@@ -256,11 +261,11 @@ void main() {
         // milliseconds. The AOVs keep their miss values.
         radiance = missColor(dir);
 #else
-        radiance = traceSample(origin, dir, pixelIndex, sampleIndex);
+        radiance = traceSample(origin, dir, cameraFrom, pixelIndex, sampleIndex);
         if (WRITE_AOV && sampleIndex == 0u) {
             cameraRay(vec2(pixel) + 0.5, origin, dir);
             Hit hit;
-            if (traceClosest(origin, dir, kInfinity, hit)) {
+            if (traceClosest(origin, dir, cameraFrom, kInfinity, hit)) {
                 vec3 ng = surfaceAt(origin, dir, hit).geometricNormal;
                 aov = vec4(dot(ng, dir) > 0.0 ? -ng : ng, hit.t);
             }

@@ -140,10 +140,16 @@ uint cellStartAt(uint i) {
 uint cellPrimitiveAt(uint k) {
     return TEXEL_BUFFERS ? texelFetch(cellPrimitiveTexels, int(k)).x : cellPrimitiveArray[k];
 }
-// Entry i of the frame's tile list: the tile's first pixel.
-uvec2 tileListOrigin(uint i) {
-    uint tile = texelFetch(tileListTexels, int(i)).x;
-    return uvec2(tile & 0xFFFFu, tile >> 16u) * 8u;
+// Entry i of the frame's tile list: the tile's first pixel, and the distance along its camera
+// rays before which they meet nothing in the grid (render/traced_tiles.h, tileStartDistances).
+uvec2 tileListOrigin(uvec2 entry) {
+    return uvec2(entry.x & 0xFFFFu, entry.x >> 16u) * 8u;
+}
+float tileListStart(uvec2 entry) {
+    return uintBitsToFloat(entry.y);
+}
+uvec2 tileListEntry(uint i) {
+    return texelFetch(tileListTexels, int(i)).xy;
 }
 // Row `row` of cell entry k's triangle (GpuCellTriangle: row 0 has the triangle's index in w).
 uvec4 cellTriangleRow(uint k, uint row) {

@@ -5,9 +5,11 @@
 // Hits count on the open segment 0 < t < tMax.
 //
 // TRACE_WALK_NAME is the walk itself; `hit` comes in as the best hit so far (t = tMax when there
-// is none). In resumable tracing (resume.glsl) it skips the tests of the cells `resume` says an
+// is none). The grid's walk starts at gridFrom along the ray: nothing in the grid lies nearer
+// (a camera ray's tile start, render/traced_tiles.h; 0 for every other ray). In resumable tracing (resume.glsl) it skips the tests of the cells `resume` says an
 // earlier dispatch did, and stops, setting resume.interrupted, where the lane's budget runs out.
-bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resume) {
+bool TRACE_WALK_NAME(vec3 origin, vec3 dir, float gridFrom, inout Hit hit,
+                     inout WalkResume resume) {
     if (HAS_PLANES) {
         chargeBudget(framePlaneCount(frame));
         for (uint i = 0u; i < framePlaneCount(frame); ++i) {
@@ -24,7 +26,9 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
     if (HAS_SPHERES || HAS_TRIANGLES || HAS_INSTANCES) {
         vec3 invDir = 1.0 / dir;
         float tEnter, tExit;
-        if (clipToGrid(origin, invDir, tEnter, tExit) && tEnter < hit.t) {
+        bool crosses = clipToGrid(origin, invDir, tEnter, tExit);
+        tEnter = max(tEnter, gridFrom);
+        if (crosses && tEnter <= tExit && tEnter < hit.t) {
             WatertightRay wray = makeWatertightRay(dir);
             // A regular grid is walked with 3D-DDA, an adaptive one from cell box to cell box.
             GridWalk walk;
@@ -144,7 +148,7 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, inout Hit hit, inout WalkResume resu
 // The walk as the tracer calls it. In resumable tracing a walk an earlier dispatch finished
 // returns its logged result; once this dispatch has interrupted a walk, later walks of the
 // sample return nothing (the sample is replayed next time, and nothing of it is kept now).
-bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
+bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float gridFrom, float tMax, out Hit hit) {
     hit.t = tMax;
     hit.kind = kKindNone;
     hit.index = 0u;
@@ -171,7 +175,7 @@ bool TRACE_RAY_NAME(vec3 origin, vec3 dir, float tMax, out Hit hit) {
                 hit = best;
         }
     }
-    TRACE_WALK_NAME(origin, dir, hit, resume);
+    TRACE_WALK_NAME(origin, dir, gridFrom, hit, resume);
     // A hit's entry becomes its sphere once the walk is done (an interrupted walk keeps the
     // entry: it goes on from there). Shadow rays need no index.
     if (TRACE_RAY_ANY_HIT == 0 && !(RESUMABLE && resume.interrupted))

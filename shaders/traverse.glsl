@@ -282,5 +282,5 @@ bool stepBoxWalk(inout BoxWalk w, vec3 origin, vec3 dir) {
 // True when anything lies on the open segment 0 < t < tMax.
 bool traceOccluded(vec3 origin, vec3 dir, float tMax) {
     Hit hit;
-    return traceAnyHit(origin, dir, tMax, hit);
+    return traceAnyHit(origin, dir, 0.0, tMax, hit);
 }

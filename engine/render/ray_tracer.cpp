@@ -55,6 +55,7 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     createPipeline();
     if (options.cullMissTiles)
         missPipeline_ = createTracerPipeline(features_.backgroundOnly(), Module::BackgroundOnly);
+    tileStarts_ = options.cullMissTiles && options.tileStarts;
     size_t mirror = 0;
     PlaneTiles mode = planeTilesMode(scene, mirror);
     if (options.cullMissTiles && options.cullPlaneTiles && mode != PlaneTiles::Never)
@@ -198,11 +199,11 @@ void RayTracer::createImages(uint32_t width, uint32_t height) {
     accum_ = vk::Image(context_, width, height, VK_FORMAT_R32G32B32A32_SFLOAT, usage);
     // Every tile row by row, for the full tracer: what compile()'s one-tile dispatches read.
     TileRect tiles = imageTiles(width, height);
-    VkDeviceSize listBytes = VkDeviceSize(tiles.width()) * tiles.height() * sizeof(uint32_t);
+    VkDeviceSize listBytes = VkDeviceSize(tiles.width()) * tiles.height() * 2 * sizeof(uint32_t);
     tileList_ = vk::Buffer(
         context_, listBytes,
         VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
-    tileListView_ = vk::BufferView(context_, tileList_.handle(), VK_FORMAT_R32_UINT, listBytes);
+    tileListView_ = vk::BufferView(context_, tileList_.handle(), VK_FORMAT_R32G32_UINT, listBytes);
     runner_.run([&](VkCommandBuffer commands) { recordTileList(commands, allTiles(tiles)); });
     // The AOV image is full size only when asked for: a scene pays for what it uses.
     bool aov = features_.writeAov;
@@ -248,19 +249,29 @@ std::vector<uint8_t> RayTracer::frameTileClasses(const gpu::GpuFrameParams &para
 
 TileLists RayTracer::frameTiles(const gpu::GpuFrameParams &params) {
     lastTileClasses_ = frameTileClasses(params);
-    return tileLists(lastTileClasses_, imageTiles(width_, height_));
+    std::vector<float> starts;
+    if (tileStarts_)
+        starts = tileStartDistances(params, extent_.startBoxes);
+    return tileLists(lastTileClasses_, imageTiles(width_, height_), starts);
 }
 
 void RayTracer::recordTileList(VkCommandBuffer commands, const TileLists &lists) {
     // Earlier dispatches (of this or an earlier submission) have read the old list.
     vk::memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    // Each entry: the tile, and its start distance's bits (0: from the eye).
+    std::vector<uint32_t> entries(2 * lists.tiles.size(), 0);
+    for (size_t i = 0; i < lists.tiles.size(); ++i) {
+        entries[2 * i] = lists.tiles[i];
+        if (i < lists.starts.size())
+            std::memcpy(&entries[2 * i + 1], &lists.starts[i], sizeof(float));
+    }
     // vkCmdUpdateBuffer takes at most 65,536 bytes a call.
     const size_t chunk = 65536 / sizeof(uint32_t);
-    for (size_t first = 0; first < lists.tiles.size(); first += chunk) {
-        size_t count = std::min(chunk, lists.tiles.size() - first);
+    for (size_t first = 0; first < entries.size(); first += chunk) {
+        size_t count = std::min(chunk, entries.size() - first);
         vkCmdUpdateBuffer(commands, tileList_.handle(), first * sizeof(uint32_t),
-                          count * sizeof(uint32_t), lists.tiles.data() + first);
+                          count * sizeof(uint32_t), entries.data() + first);
     }
     vk::memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);

@@ -172,7 +172,7 @@ private:
     vk::Buffer walkLog_;
     vk::Image accum_;
     vk::Image aov_;
-    vk::Buffer tileList_; // r32ui, one entry per tile of the image
+    vk::Buffer tileList_; // rg32ui, one entry per tile of the image: tile, start distance
     vk::BufferView tileListView_;
     vk::TimestampQueries timestamps_;
     std::unique_ptr<vk::ComputePipeline> pipeline_;
@@ -187,6 +187,7 @@ private:
     // TracerOptions::cullPlaneTiles, planeTilesMode, and shadows with a bound.
     std::optional<PlaneTileGuards> planeGuards_;
     std::vector<uint8_t> lastTileClasses_; // FrameResult::tiles of the last recordSamples
+    bool tileStarts_ = false;              // TracerOptions::tileStarts, where the tiles are culled
 };
 
 } // namespace prism

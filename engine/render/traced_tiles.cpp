@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "accel/finite_primitives.h"
 
@@ -111,22 +112,19 @@ bool boxImage(const RayFrame &cam, const Aabb &box, ImageRect &rect, bool &all) 
 
 } // namespace
 
-SceneExtent sceneExtent(const Scene &scene, const Grid &grid) {
-    SceneExtent extent;
-    for (const Plane &p : scene.planes) {
-        glm::dvec3 n(p.normal);
-        extent.planes.push_back(glm::dvec4(n, glm::dot(n, p.point)));
-    }
-    FinitePrimitives primitives(scene);
-    if (primitives.count() == 0)
-        return extent;
-    // Cubic blocks, as many along the longest side as kExtentBlocks.
+namespace {
+
+// The blocks of a grid of at most `blocks` per axis over `grid`'s box that some primitive
+// overlaps.
+std::vector<Aabb> occupiedBlocks(const FinitePrimitives &primitives, const Grid &grid,
+                                 uint32_t blocks) {
+    // Cubic blocks, as many along the longest side as `blocks`.
     glm::dvec3 lo(grid.boundsMin), hi(grid.boundsMax), size = hi - lo;
-    double side = std::max({size.x, size.y, size.z}) / kExtentBlocks;
+    double side = std::max({size.x, size.y, size.z}) / blocks;
     glm::ivec3 res(1);
     if (side > 0.0)
         for (int a = 0; a < 3; ++a)
-            res[a] = std::clamp(int(std::ceil(size[a] / side)), 1, int(kExtentBlocks));
+            res[a] = std::clamp(int(std::ceil(size[a] / side)), 1, int(blocks));
     glm::dvec3 block = size / glm::dvec3(res);
     auto blockOf = [&](const glm::dvec3 &p) {
         glm::ivec3 b;
@@ -161,11 +159,28 @@ SceneExtent sceneExtent(const Scene &scene, const Grid &grid) {
                         occupied[index] = 1;
                 }
     }
+    std::vector<Aabb> boxes;
     for (int z = 0; z < res.z; ++z)
         for (int y = 0; y < res.y; ++y)
             for (int x = 0; x < res.x; ++x)
                 if (occupied[size_t(x) + size_t(res.x) * (size_t(y) + size_t(res.y) * z)])
-                    extent.boxes.push_back(blockBox({x, y, z}));
+                    boxes.push_back(blockBox({x, y, z}));
+    return boxes;
+}
+
+} // namespace
+
+SceneExtent sceneExtent(const Scene &scene, const Grid &grid) {
+    SceneExtent extent;
+    for (const Plane &p : scene.planes) {
+        glm::dvec3 n(p.normal);
+        extent.planes.push_back(glm::dvec4(n, glm::dot(n, p.point)));
+    }
+    FinitePrimitives primitives(scene);
+    if (primitives.count() == 0)
+        return extent;
+    extent.boxes = occupiedBlocks(primitives, grid, kExtentBlocks);
+    extent.startBoxes = occupiedBlocks(primitives, grid, kStartBlocks);
     return extent;
 }
 
@@ -179,11 +194,36 @@ RayFrame rayFrame(const gpu::GpuFrameParams &frame) {
     return cam;
 }
 
+// The tiles whose camera rays may pass through `box`: false when none may; `all` when every
+// one may (the box reaches back to the eye's plane).
+bool boxTiles(const gpu::GpuFrameParams &frame, const RayFrame &cam, const Aabb &box,
+              TileRect &tiles, bool &all) {
+    uint32_t width = frame.image.x, height = frame.image.y;
+    TileRect image = imageTiles(width, height);
+    ImageRect r;
+    if (!boxImage(cam, box, r, all))
+        return false;
+    if (all) {
+        tiles = image;
+        return true;
+    }
+    // Pixels whose sample positions may fall in the rectangle, one more each side (the tile
+    // span's margin), then their tiles.
+    double px0 = (r.x0 + 1.0) * 0.5 * width - 1.0, px1 = (r.x1 + 1.0) * 0.5 * width + 1.0;
+    double py0 = (1.0 - r.y1) * 0.5 * height - 1.0, py1 = (1.0 - r.y0) * 0.5 * height + 1.0;
+    if (px1 < 0.0 || py1 < 0.0 || px0 >= width || py0 >= height)
+        return false;
+    tiles.x0 = uint32_t(std::max(0.0, px0)) / kTileSize;
+    tiles.y0 = uint32_t(std::max(0.0, py0)) / kTileSize;
+    tiles.x1 = std::min(image.x1, uint32_t(std::min(double(width), px1)) / kTileSize + 1);
+    tiles.y1 = std::min(image.y1, uint32_t(std::min(double(height), py1)) / kTileSize + 1);
+    return true;
+}
+
 // For each tile: 1 where a camera ray may pass through one of the boxes.
 std::vector<uint8_t> tilesSeeingBoxes(const gpu::GpuFrameParams &frame, const RayFrame &cam,
                                       const std::vector<Aabb> &boxes) {
-    uint32_t width = frame.image.x, height = frame.image.y;
-    TileRect image = imageTiles(width, height);
+    TileRect image = imageTiles(frame.image.x, frame.image.y);
     uint32_t tilesX = image.x1, tilesY = image.y1;
     // Each box marks the tiles round its image: counted in a difference array (+1 at a
     // rectangle's corner, -1 past its ends), summed once at the end.
@@ -192,26 +232,16 @@ std::vector<uint8_t> tilesSeeingBoxes(const gpu::GpuFrameParams &frame, const Ra
         return marks[size_t(y) * (tilesX + 1) + x];
     };
     for (const Aabb &box : boxes) {
-        ImageRect r;
+        TileRect t;
         bool all;
-        if (!boxImage(cam, box, r, all))
+        if (!boxTiles(frame, cam, box, t, all))
             continue;
         if (all)
             return std::vector<uint8_t>(size_t(tilesX) * tilesY, 1);
-        // Pixels whose sample positions may fall in the rectangle, one more each side (the
-        // tile span's margin), then their tiles.
-        double px0 = (r.x0 + 1.0) * 0.5 * width - 1.0, px1 = (r.x1 + 1.0) * 0.5 * width + 1.0;
-        double py0 = (1.0 - r.y1) * 0.5 * height - 1.0, py1 = (1.0 - r.y0) * 0.5 * height + 1.0;
-        if (px1 < 0.0 || py1 < 0.0 || px0 >= width || py0 >= height)
-            continue;
-        uint32_t x0 = uint32_t(std::max(0.0, px0)) / kTileSize;
-        uint32_t y0 = uint32_t(std::max(0.0, py0)) / kTileSize;
-        uint32_t x1 = std::min(tilesX, uint32_t(std::min(double(width), px1)) / kTileSize + 1);
-        uint32_t y1 = std::min(tilesY, uint32_t(std::min(double(height), py1)) / kTileSize + 1);
-        at(x0, y0) += 1;
-        at(x1, y0) -= 1;
-        at(x0, y1) -= 1;
-        at(x1, y1) += 1;
+        at(t.x0, t.y0) += 1;
+        at(t.x1, t.y0) -= 1;
+        at(t.x0, t.y1) -= 1;
+        at(t.x1, t.y1) += 1;
     }
     std::vector<uint8_t> seen(size_t(tilesX) * tilesY, 0);
     std::vector<int32_t> column(tilesX + 1, 0); // running sums down each column
@@ -224,6 +254,33 @@ std::vector<uint8_t> tilesSeeingBoxes(const gpu::GpuFrameParams &frame, const Ra
         }
     }
     return seen;
+}
+
+// A distance t below which no camera ray o + t d of the frame meets the box. Perspective rays
+// leave the eye with unit directions, so t is the distance from the eye, at least the box's.
+// Parallel rays leave the image plane along forward: t is a point's depth beyond that plane,
+// less what du and dv add to it for a camera whose axes are not quite square. With a relative
+// margin far above the shader's rounding (a few 1e-7 of t), and never below 0.
+double distanceBeforeBox(const RayFrame &cam, const Aabb &box) {
+    glm::dvec3 pad =
+        kEpsilon * (glm::abs(box.max - box.min) + glm::abs(box.min) + glm::abs(box.max)) + 1e-30;
+    glm::dvec3 lo = box.min - pad, hi = box.max + pad;
+    double t;
+    if (cam.parallel) {
+        double ff = glm::dot(cam.forward, cam.forward);
+        t = INFINITY;
+        for (int k = 0; k < 8; ++k) {
+            glm::dvec3 p((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+            t = std::min(t, glm::dot(p - cam.eye, cam.forward) / ff);
+        }
+        // Samples lie within a pixel of the image: |x|, |y| < 1.1 for any image of 20 pixels.
+        t -= 1.1 *
+             (std::abs(glm::dot(cam.du, cam.forward)) + std::abs(glm::dot(cam.dv, cam.forward))) /
+             ff;
+    } else {
+        t = glm::length(glm::max(glm::max(lo - cam.eye, cam.eye - hi), glm::dvec3(0.0)));
+    }
+    return std::max(0.0, t * (1.0 - 1e-4));
 }
 
 bool tileSeesAPlane(const gpu::GpuFrameParams &frame, const RayFrame &cam,
@@ -263,6 +320,30 @@ std::vector<uint8_t> tileClasses(const gpu::GpuFrameParams &frame, const SceneEx
     return classes;
 }
 
+std::vector<float> tileStartDistances(const gpu::GpuFrameParams &frame,
+                                      const std::vector<Aabb> &boxes) {
+    RayFrame cam = rayFrame(frame);
+    TileRect image = imageTiles(frame.image.x, frame.image.y);
+    std::vector<float> starts(size_t(image.width()) * image.height(), kNoBoxAhead);
+    for (const Aabb &box : boxes) {
+        TileRect t;
+        bool all;
+        if (!boxTiles(frame, cam, box, t, all))
+            continue;
+        // Rounded down to a float: the shader's t is one.
+        double d = distanceBeforeBox(cam, box);
+        float start = float(d);
+        if (double(start) > d)
+            start = std::nextafter(start, 0.0f);
+        for (uint32_t y = t.y0; y < t.y1; ++y)
+            for (uint32_t x = t.x0; x < t.x1; ++x) {
+                float &tile = starts[size_t(y) * image.x1 + x];
+                tile = std::min(tile, start);
+            }
+    }
+    return starts;
+}
+
 std::vector<uint32_t> spreadRowOrder(uint32_t rows) {
     uint32_t bits = 0;
     while ((1u << bits) < rows)
@@ -279,15 +360,21 @@ std::vector<uint32_t> spreadRowOrder(uint32_t rows) {
     return order;
 }
 
-TileLists tileLists(const std::vector<uint8_t> &classes, const TileRect &image) {
+TileLists tileLists(const std::vector<uint8_t> &classes, const TileRect &image,
+                    const std::vector<float> &starts) {
     TileLists lists;
     lists.tiles.reserve(size_t(image.width()) * image.height());
+    lists.starts.reserve(size_t(image.width()) * image.height());
     std::vector<uint32_t> rows = spreadRowOrder(image.y1);
     for (uint8_t wanted : {kTileFull, kTilePlanesOnly, kTileBackground})
         for (uint32_t ty : rows)
-            for (uint32_t tx = 0; tx < image.x1; ++tx)
-                if (classes[size_t(ty) * image.x1 + tx] == wanted)
+            for (uint32_t tx = 0; tx < image.x1; ++tx) {
+                size_t i = size_t(ty) * image.x1 + tx;
+                if (classes[i] == wanted) {
                     lists.tiles.push_back(packTile(tx, ty));
+                    lists.starts.push_back(starts.empty() ? 0.0f : starts[i]);
+                }
+            }
     lists.full = uint32_t(std::count(classes.begin(), classes.end(), kTileFull));
     lists.traced =
         lists.full + uint32_t(std::count(classes.begin(), classes.end(), kTilePlanesOnly));

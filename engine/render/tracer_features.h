@@ -46,6 +46,10 @@ struct TracerOptions {
     // get a variant with no grid (render/plane_shadows.h), where nothing there starts a
     // secondary ray; off only to measure what that saves (prism-bench no-plane-tiles).
     bool cullPlaneTiles = true;
+    // A camera ray's grid walk starts where its tile's rays may first meet the geometry
+    // (render/traced_tiles.h, tileStartDistances) instead of where they enter the grid; off
+    // only to measure what that saves (prism-bench no-tile-starts). Needs cullMissTiles.
+    bool tileStarts = true;
     // Grids of one kind: each cell entry's primitive stored in list order, so a test fetches no
     // primitive id first (triangles: GpuCellTriangle, 48 bytes an entry; spheres: centre and
     // radius, 16 bytes); off only to measure what that saves (prism-bench no-cell-primitives).

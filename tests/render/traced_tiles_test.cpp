@@ -3,7 +3,10 @@
 // scene leaves background, and culling must change no pixel, AOV or ray count.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <optional>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -12,6 +15,7 @@
 #include "render/plane_shadows.h"
 #include "render/traced_tiles.h"
 #include "render_helpers.h"
+#include "scene/scene_loader.h"
 #include "scene/scene_origin.h"
 #include "scene_builders.h"
 #include "test_scenes.h"
@@ -64,10 +68,9 @@ bool hitsPlane(glm::dvec3 o, glm::dvec3 d, glm::dvec4 plane) {
     return denom != 0.0 && (plane.w - glm::dot(glm::dvec3(plane), o)) / denom > 0.0;
 }
 
-// Every sample position that could see a box or a plane lies in a traced tile; returns the
-// share of tiles traced.
-double checkConservative(const gpu::GpuFrameParams &frame, const SceneExtent &extent) {
-    std::vector<uint8_t> mayHit = tilesThatMayHit(frame, extent);
+// Calls visit(px, py, o, d) for the shader's camera ray at five sample positions of every pixel
+// (its corners and centre) until visit returns false; returns whether none did.
+template <typename Visit> bool forEachSampleRay(const gpu::GpuFrameParams &frame, Visit visit) {
     const glm::vec2 offsets[] = {
         {0.0f, 0.0f}, {0.5f, 0.5f}, {0.9999f, 0.0f}, {0.0f, 0.9999f}, {0.9999f, 0.9999f}};
     for (uint32_t py = 0; py < frame.image.y; ++py)
@@ -75,49 +78,76 @@ double checkConservative(const gpu::GpuFrameParams &frame, const SceneExtent &ex
             for (glm::vec2 offset : offsets) {
                 glm::dvec3 o, d;
                 cameraRay(frame, glm::vec2(px, py) + offset, o, d);
-                bool mayHitHere = false;
-                for (const Aabb &box : extent.boxes)
-                    mayHitHere = mayHitHere || hitsBox(o, d, box.min, box.max);
-                for (const glm::dvec4 &plane : extent.planes)
-                    mayHitHere = mayHitHere || hitsPlane(o, d, plane);
-                if (mayHitHere && !traced(mayHit, frame, px / kTileSize, py / kTileSize)) {
-                    ADD_FAILURE() << "pixel " << px << "," << py
-                                  << " sees the scene in a tile left to the background";
-                    return 1.0;
-                }
+                if (!visit(px, py, o, d))
+                    return false;
             }
-    return tracedShare(mayHit);
+    return true;
+}
+
+// Every sample position that could see a box or a plane lies in a traced tile; returns the
+// share of tiles traced.
+double checkConservative(const gpu::GpuFrameParams &frame, const SceneExtent &extent) {
+    std::vector<uint8_t> mayHit = tilesThatMayHit(frame, extent);
+    bool ok = forEachSampleRay(frame, [&](uint32_t px, uint32_t py, glm::dvec3 o, glm::dvec3 d) {
+        bool mayHitHere = false;
+        for (const Aabb &box : extent.boxes)
+            mayHitHere = mayHitHere || hitsBox(o, d, box.min, box.max);
+        for (const glm::dvec4 &plane : extent.planes)
+            mayHitHere = mayHitHere || hitsPlane(o, d, plane);
+        if (mayHitHere && !traced(mayHit, frame, px / kTileSize, py / kTileSize)) {
+            ADD_FAILURE() << "pixel " << px << "," << py
+                          << " sees the scene in a tile left to the background";
+            return false;
+        }
+        return true;
+    });
+    return ok ? tracedShare(mayHit) : 1.0;
 }
 
 gpu::GpuFrameParams frameFor(const Camera &camera, uint32_t width, uint32_t height) {
     return makeFrameParams(camera, width, height, 1, 1);
 }
 
+// A random view for the trials below: eye and target in [-6, 6]^3, 20-100 degrees, every
+// third trial a parallel camera; none where the eye and the target nearly meet.
+std::optional<Camera> randomCamera(std::mt19937 &rng, int trial) {
+    std::uniform_real_distribution<double> coord(-6.0, 6.0), unit(-1.0, 1.0);
+    Camera camera;
+    camera.eye = {coord(rng), coord(rng), coord(rng)};
+    camera.look = {coord(rng), coord(rng), coord(rng)};
+    if (glm::length(camera.look - camera.eye) < 0.5)
+        return std::nullopt;
+    camera.fovDegrees = float(20.0 + 40.0 * (unit(rng) + 1.0));
+    if (trial % 3 == 0)
+        camera.orthoHeight = float(2.0 + 3.0 * (unit(rng) + 1.0));
+    return camera;
+}
+
+// A random box in [-6, 6]^3, 0.1 to 6 a side.
+Aabb randomBox(std::mt19937 &rng) {
+    std::uniform_real_distribution<double> coord(-6.0, 6.0), size(0.05, 3.0);
+    glm::dvec3 centre{coord(rng), coord(rng), coord(rng)};
+    glm::dvec3 half{size(rng), size(rng), size(rng)};
+    return boxOf(centre - half, centre + half);
+}
+
 TEST(TracedTiles, NoRayThatMayHitIsLeftToTheBackground) {
     std::mt19937 rng(7);
-    std::uniform_real_distribution<double> coord(-6.0, 6.0), size(0.05, 3.0), unit(-1.0, 1.0);
+    std::uniform_real_distribution<double> coord(-6.0, 6.0), unit(-1.0, 1.0);
     int shrunk = 0;
     for (int trial = 0; trial < 200; ++trial) {
-        Camera camera;
-        camera.eye = {coord(rng), coord(rng), coord(rng)};
-        camera.look = {coord(rng), coord(rng), coord(rng)};
-        if (glm::length(camera.look - camera.eye) < 0.5)
+        std::optional<Camera> camera = randomCamera(rng, trial);
+        if (!camera)
             continue;
-        camera.fovDegrees = float(20.0 + 40.0 * (unit(rng) + 1.0));
-        if (trial % 3 == 0)
-            camera.orthoHeight = float(2.0 + 3.0 * (unit(rng) + 1.0));
         SceneExtent extent;
-        for (int box = 0; box < (trial % 5 == 4 ? 0 : 1 + trial % 3); ++box) {
-            glm::dvec3 centre{coord(rng), coord(rng), coord(rng)};
-            glm::dvec3 half{size(rng), size(rng), size(rng)};
-            extent.boxes.push_back(boxOf(centre - half, centre + half));
-        }
+        for (int box = 0; box < (trial % 5 == 4 ? 0 : 1 + trial % 3); ++box)
+            extent.boxes.push_back(randomBox(rng));
         if (trial % 4 == 1) {
             glm::dvec3 n = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
             extent.planes.push_back(glm::dvec4(n, glm::dot(n, glm::dvec3(0.0, coord(rng), 0.0))));
         }
         // Odd sizes: partial tiles on the right and at the bottom.
-        double share = checkConservative(frameFor(camera, 61, 45), extent);
+        double share = checkConservative(frameFor(*camera, 61, 45), extent);
         shrunk += share < 1.0 ? 1 : 0;
     }
     EXPECT_GT(shrunk, 50) << "the traced tiles should rarely be the whole image here";
@@ -179,6 +209,71 @@ TEST(TracedTiles, ABoxRoundTheEyeTracesEverything) {
     EXPECT_EQ(tracedShare(tilesThatMayHit(frameFor(camera, 64, 48), extent)), 1.0);
 }
 
+// Where a camera ray (o + t d, t >= 0) enters a box, or infinity where it misses it.
+double boxEntry(glm::dvec3 o, glm::dvec3 d, const Aabb &box) {
+    double tEnter = 0.0, tExit = INFINITY;
+    for (int a = 0; a < 3; ++a) {
+        double t0 = (box.min[a] - o[a]) / d[a], t1 = (box.max[a] - o[a]) / d[a];
+        tEnter = std::max(tEnter, std::min(t0, t1));
+        tExit = std::min(tExit, std::max(t0, t1));
+    }
+    return tEnter <= tExit ? tEnter : INFINITY;
+}
+
+// A tile's start distance is a lower bound: no camera ray of the tile (the shader's float ray,
+// at its corners and centre and beyond) enters a box before it, for both cameras, boxes round
+// the eye and behind it. And it is not a trivial one: most tiles whose rays meet a box in front
+// start past the eye.
+TEST(TracedTiles, NoCameraRayMeetsABoxBeforeItsTileStarts) {
+    std::mt19937 rng(17);
+    size_t seeing = 0, started = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        std::optional<Camera> camera = randomCamera(rng, trial);
+        if (!camera)
+            continue;
+        std::vector<Aabb> boxes;
+        for (int box = 0; box < 1 + trial % 4; ++box)
+            boxes.push_back(randomBox(rng));
+        gpu::GpuFrameParams frame = frameFor(*camera, 61, 45);
+        std::vector<float> starts = tileStartDistances(frame, boxes);
+        uint32_t tilesX = imageTiles(frame.image.x, frame.image.y).x1;
+        ASSERT_EQ(starts.size(), size_t(tilesX) * imageTiles(61, 45).y1);
+        std::vector<double> nearest(starts.size(), INFINITY);
+        forEachSampleRay(frame, [&](uint32_t px, uint32_t py, glm::dvec3 o, glm::dvec3 d) {
+            size_t tile = size_t(py / kTileSize) * tilesX + px / kTileSize;
+            for (const Aabb &box : boxes)
+                nearest[tile] = std::min(nearest[tile], boxEntry(o, d, box));
+            return true;
+        });
+        for (size_t tile = 0; tile < starts.size(); ++tile) {
+            ASSERT_LE(double(starts[tile]), nearest[tile])
+                << "trial " << trial << ", tile " << tile << ": a ray meets a box before";
+            if (std::isfinite(nearest[tile]) && nearest[tile] > 0.0) {
+                ++seeing;
+                started += starts[tile] > 0.0f ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_GT(double(started), 0.5 * double(seeing));
+}
+
+// One box ahead: the tile through its middle starts within a thousandth of the box's distance.
+TEST(TracedTiles, ATileStartsAtTheNearestBoxItSees) {
+    Camera camera; // at (0, 0, 5) looking at the origin
+    std::vector<Aabb> boxes{boxOf(glm::dvec3(-0.5), glm::dvec3(0.5))};
+    gpu::GpuFrameParams frame = frameFor(camera, 64, 48);
+    std::vector<float> starts = tileStartDistances(frame, boxes);
+    float middle = starts[size_t(3) * 8 + 4];
+    EXPECT_LE(middle, 4.5f);
+    EXPECT_GT(middle, 4.5f * 0.999f);
+    EXPECT_EQ(starts[0], kNoBoxAhead) << "a corner tile sees no box";
+    camera.orthoHeight = 3.0f; // parallel rays from the image plane through the eye
+    frame = frameFor(camera, 64, 48);
+    starts = tileStartDistances(frame, boxes);
+    EXPECT_LE(starts[size_t(3) * 8 + 4], 4.5f);
+    EXPECT_GT(starts[size_t(3) * 8 + 4], 4.5f * 0.999f);
+}
+
 // The blocks hold every primitive: points on every triangle and sphere lie in one of them.
 TEST(TracedTiles, TheExtentsBlocksHoldEveryPrimitive) {
     std::mt19937 rng(11);
@@ -190,11 +285,15 @@ TEST(TracedTiles, TheExtentsBlocksHoldEveryPrimitive) {
     ASSERT_EQ(extent.planes.size(), 1u);
     uint32_t blocks = kExtentBlocks * kExtentBlocks * kExtentBlocks;
     EXPECT_LT(extent.boxes.size(), blocks / 4) << "mostly empty space here";
-    auto held = [&](glm::dvec3 p) {
-        for (const Aabb &b : extent.boxes)
+    EXPECT_GT(extent.startBoxes.size(), extent.boxes.size()) << "the start blocks are finer";
+    auto heldBy = [&](const std::vector<Aabb> &boxes, glm::dvec3 p) {
+        for (const Aabb &b : boxes)
             if (glm::all(glm::greaterThanEqual(p, b.min)) && glm::all(glm::lessThanEqual(p, b.max)))
                 return true;
         return false;
+    };
+    auto held = [&](glm::dvec3 p) {
+        return heldBy(extent.boxes, p) && heldBy(extent.startBoxes, p);
     };
     for (const Triangle &t : scene.triangles)
         for (int k = 0; k < 200; ++k) {
@@ -579,6 +678,30 @@ TEST_F(TracedTilesRender, ChangeNoPixel) {
     EXPECT_LT(
         tracedShare(tilesThatMayHit(frameFor(centred.camera, 70, 50), sceneExtent(centred, grid))),
         0.9);
+}
+
+// Camera rays that start their walk at their tile's start distance find what a walk from the
+// grid's entry finds: every pixel, AOV and ray count the same, on both grids, both cameras, at
+// depth 1 and with reflections, with a mesh (the teapot, whose grid is adaptive) and spheres.
+TEST_F(TracedTilesRender, TileStartsChangeNoPixel) {
+    Scene scene = stabilityScene();
+    scene.camera.eye = {0.0, 3.0, 9.0};
+    scene.camera.look = {0.0, 1.0, 0.0};
+    Scene parallel = scene;
+    parallel.camera.orthoHeight = 5.0f;
+    Scene teapot = loadScene(std::filesystem::path(PRISM_SCENES_DIR) / "teapot.scene");
+    for (const Scene *s : {&scene, &parallel, &teapot})
+        for (const char *grid : {"regular", "adaptive"})
+            for (uint32_t depth : {1u, 3u}) {
+                SCOPED_TRACE(std::string(grid) + " depth " + std::to_string(depth));
+                TracerOptions from, entry;
+                from.writeAov = entry.writeAov = true;
+                entry.tileStarts = false;
+                GridOptions g = parseGridOption(grid);
+                GpuRender a = renderGpu(context(), *s, 96, 72, 1, depth, g, from);
+                GpuRender b = renderGpu(context(), *s, 96, 72, 1, depth, g, entry);
+                expectSameFrame(a, b);
+            }
 }
 
 // More tiles than one row of workgroups may hold (65,535), in one dispatch: every pixel is still

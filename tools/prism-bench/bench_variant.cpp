@@ -47,6 +47,8 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.tracer.cullMissTiles = false;
         } else if (token == "no-plane-tiles") {
             v.tracer.cullPlaneTiles = false;
+        } else if (token == "no-tile-starts") {
+            v.tracer.tileStarts = false;
         } else if (token == "no-cell-primitives") {
             v.tracer.cellPrimitives = false;
         } else if (token == "resumable") {
@@ -65,6 +67,7 @@ BenchVariant parseBenchVariant(const std::string &text) {
             throw Error("variant " + text + ": unknown part '" + token +
                         "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
                         "no-reflection, no-refraction, no-shadows, no-cull, no-plane-tiles, "
+                        "no-tile-starts, "
                         "no-cell-primitives, texel, "
                         "storage, "
                         "resumable, offset=relative|E, triangle=watertight|mt, flat; join with +)");
