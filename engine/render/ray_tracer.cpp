@@ -37,9 +37,9 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
       features_(
           chooseFeatures(scene, grid, options, context.properties().limits.maxTexelBufferElements)),
       limits_(arrayLimits(context, options)), runner_(context),
-      scene_(uploadScene(context, runner_,
-                         packScene(scene, grid, features_.cellTriangles, features_.cellSpheres),
-                         limits_)),
+      scene_(uploadScene(
+          context, runner_, packScene(scene, grid, features_.cellTriangles, features_.cellSpheres),
+          limits_, options.stagedUpload ? UploadPath::Staged : UploadPath::InPlaceWhereShared)),
       stats_(context, sizeof(gpu::GpuStats),
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT, // snapshots for the viewer

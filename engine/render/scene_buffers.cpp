@@ -21,8 +21,9 @@ constexpr TexelLayout kUvec4Texels{VK_FORMAT_R32G32B32A32_UINT, 16};
 
 class Uploader {
 public:
-    Uploader(const vk::Context &context, vk::CommandRunner &runner, const ArrayLimits &limits)
-        : context_(context), runner_(runner), limits_(limits) {}
+    Uploader(const vk::Context &context, vk::CommandRunner &runner, const ArrayLimits &limits,
+             UploadPath path)
+        : context_(context), runner_(runner), limits_(limits), path_(path) {}
 
     SceneArray array(std::span<const std::byte> data, const char *what, TexelLayout texels) {
         uint64_t bytes = data.size();
@@ -42,11 +43,13 @@ public:
         vk::Buffer target(context_, size,
                           kind | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                               (texelView ? VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : 0),
-                          false);
+                          false, path_ == UploadPath::InPlaceWhereShared);
+        if (target.mapped()) { // coherent: the next submission sees the writes
+            fill(target.mapped(), data, bytes, size);
+            return target;
+        }
         vk::Buffer staging(context_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
-        std::memset(staging.mapped(), 0, size);
-        if (bytes)
-            std::memcpy(staging.mapped(), data, bytes);
+        fill(staging.mapped(), data, bytes, size);
         runner_.run([&](VkCommandBuffer commands) {
             VkBufferCopy region{0, 0, size};
             vkCmdCopyBuffer(commands, staging.handle(), target.handle(), 1, &region);
@@ -55,6 +58,13 @@ public:
     }
 
 private:
+    // The array's bytes, then zeros to the buffer's end.
+    static void fill(void *to, const void *data, uint64_t bytes, VkDeviceSize size) {
+        if (bytes)
+            std::memcpy(to, data, bytes);
+        std::memset(static_cast<std::byte *>(to) + bytes, 0, size - bytes);
+    }
+
     void checkFits(uint64_t bytes, const char *what, TexelLayout texels) const {
         std::string prefix = std::string("scene too large for ") + context_.deviceName() +
                              ": the " + what + " array ";
@@ -74,6 +84,7 @@ private:
     const vk::Context &context_;
     vk::CommandRunner &runner_;
     const ArrayLimits &limits_;
+    UploadPath path_;
 };
 
 // Every scene array once: where it comes from, its name in errors, its bindings
@@ -130,8 +141,8 @@ const ArrayBinding kArrays[] = {
 } // namespace
 
 SceneBuffers uploadScene(const vk::Context &context, vk::CommandRunner &runner,
-                         const PackedScene &packed, const ArrayLimits &limits) {
-    Uploader up(context, runner, limits);
+                         const PackedScene &packed, const ArrayLimits &limits, UploadPath path) {
+    Uploader up(context, runner, limits, path);
     SceneBuffers b;
     b.header =
         up.upload(&packed.header, sizeof(packed.header), false, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);

@@ -48,10 +48,17 @@ struct SceneBuffers {
     SceneArray meshGrids;
 };
 
+// How arrays reach device-local memory: written in place where the device shares the host's
+// memory (a CPU device: the arrays of a 1M-triangle scene, 390 MB, are then written once, not
+// into a staging copy and copied again), else through a staging buffer. Staged everywhere is
+// for the tests that compare the two.
+enum class UploadPath { InPlaceWhereShared, Staged };
+
 // Uploads every array. An array larger than the binding it is read through may hold is refused
 // with a prism::Error naming the array, the device and the limit, never truncated.
 SceneBuffers uploadScene(const vk::Context &context, vk::CommandRunner &runner,
-                         const PackedScene &packed, const ArrayLimits &limits);
+                         const PackedScene &packed, const ArrayLimits &limits,
+                         UploadPath path = UploadPath::InPlaceWhereShared);
 
 // What one array takes on the device: its buffer's size (an empty array's is one 16-byte
 // element), named as in errors ("triangle", "instance", ...).

@@ -54,6 +54,9 @@ struct TracerOptions {
     // primitive id first (triangles: GpuCellTriangle, 48 bytes an entry; spheres: centre and
     // radius, 16 bytes); off only to measure what that saves (prism-bench no-cell-primitives).
     bool cellPrimitives = true;
+    // Scene arrays through a staging buffer even where the device shares the host's memory
+    // (render/scene_buffers.h, UploadPath); only for the test that compares the two.
+    bool stagedUpload = false;
 };
 
 struct TracerFeatures {

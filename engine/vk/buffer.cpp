@@ -8,7 +8,7 @@
 namespace prism::vk {
 
 Buffer::Buffer(const Context &context, VkDeviceSize size, VkBufferUsageFlags usage,
-               bool hostVisible)
+               bool hostVisible, bool mappedWhereShared)
     : device_(context.device()), size_(size) {
     VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     info.size = size;
@@ -18,9 +18,15 @@ Buffer::Buffer(const Context &context, VkDeviceSize size, VkBufferUsageFlags usa
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device_, buffer_, &requirements);
+    const VkMemoryPropertyFlags hostFlags =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     VkMemoryPropertyFlags wanted =
-        hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-                    : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+        hostVisible ? hostFlags : VkMemoryPropertyFlags(VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    if (!hostVisible && mappedWhereShared && context.sharesHostMemory() &&
+        context.hasMemoryType(requirements.memoryTypeBits, wanted | hostFlags)) {
+        wanted |= hostFlags;
+        hostVisible = true;
+    }
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = requirements.size;
     try {

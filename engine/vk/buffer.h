@@ -13,7 +13,11 @@ class Buffer {
 public:
     Buffer() = default;
     // hostVisible: mapped for the buffer's lifetime (readback and small per-frame data).
-    Buffer(const Context &context, VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible);
+    // mappedWhereShared: device-local, and also mapped where the device shares the host's
+    // memory and has a device-local type the host can write (Context::sharesHostMemory), so
+    // the caller can fill it in place; mapped() says whether it is.
+    Buffer(const Context &context, VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible,
+           bool mappedWhereShared = false);
     ~Buffer();
     Buffer(Buffer &&other) noexcept;
     Buffer &operator=(Buffer &&other) noexcept;

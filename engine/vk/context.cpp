@@ -254,6 +254,14 @@ void Context::createDevice(const ContextOptions &options) {
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
 }
 
+bool Context::hasMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const {
+    for (uint32_t i = 0; i < memoryProperties_.memoryTypeCount; ++i)
+        if ((typeBits & (1u << i)) &&
+            (memoryProperties_.memoryTypes[i].propertyFlags & wanted) == wanted)
+            return true;
+    return false;
+}
+
 uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const {
     for (uint32_t i = 0; i < memoryProperties_.memoryTypeCount; ++i)
         if ((typeBits & (1u << i)) &&

@@ -36,6 +36,14 @@ public:
     // lavapipe silently cuts shader loops short after 65,535 iterations (see docs/design.md).
     bool isLavapipe() const { return driverId_ == VK_DRIVER_ID_MESA_LLVMPIPE; }
     uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const;
+    // Whether typeBits hold a type with every flag of `wanted`.
+    bool hasMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const;
+    // A CPU device (lavapipe) or an integrated GPU: its device-local memory is the host's, so
+    // writing a buffer in place costs no more than writing a staging copy of it.
+    bool sharesHostMemory() const {
+        return properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ||
+               properties_.deviceType == VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU;
+    }
 
     // Validation messages seen so far (warnings and errors); tests require zero.
     uint32_t validationMessageCount() const { return validationMessages_.load(); }
