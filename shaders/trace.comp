@@ -234,7 +234,13 @@ void main() {
         if (entry >= frameTileListEnd(frame))
             return; // the last row of workgroups runs past the range: the whole group leaves
         uvec2 tile = tileListEntry(entry);
-        pixel = tileListOrigin(tile) + gl_LocalInvocationID.xy;
+        // lavapipe runs each 8 consecutive invocations as one SIMD group: each gets a 4x2
+        // block of the tile rather than a row of 8, so its rays stay closer together and share
+        // more cells (docs/benchmarks.md, "4x2 blocks"). A 32-wide warp covers the same 8x4 half
+        // of the tile either way.
+        uint i = gl_LocalInvocationIndex, group = i >> 3u, lane = i & 7u;
+        pixel = tileListOrigin(tile) +
+                uvec2((group & 1u) * 4u + (lane & 3u), (group >> 1u) * 2u + (lane >> 2u));
         cameraFrom = tileListStart(tile);
     }
     profileStart();
