@@ -6,8 +6,9 @@
 //
 // TRACE_WALK_NAME is the walk itself; `hit` comes in as the best hit so far (t = tMax when there
 // is none). The grid's walk starts at gridFrom along the ray: nothing in the grid lies nearer
-// (a camera ray's tile start, render/traced_tiles.h; 0 for every other ray). In resumable tracing (resume.glsl) it skips the tests of the cells `resume` says an
-// earlier dispatch did, and stops, setting resume.interrupted, where the lane's budget runs out.
+// (a camera ray's tile start, render/traced_tiles.h; 0 for every other ray). In resumable
+// tracing (resume.glsl) it skips the tests of the cells `resume` says an earlier dispatch did,
+// and stops, setting resume.interrupted, where the lane's budget runs out.
 bool TRACE_WALK_NAME(vec3 origin, vec3 dir, float gridFrom, inout Hit hit,
                      inout WalkResume resume) {
     if (HAS_PLANES) {

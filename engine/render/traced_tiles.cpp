@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
 #include "accel/finite_primitives.h"
 
@@ -71,6 +70,22 @@ bool tileMayHitAPlane(const RayFrame &cam, const TileSpan &span,
     return false;
 }
 
+// `box` grown by a relative margin, so that rounding in the host's own arithmetic cannot cut it.
+Aabb padded(const Aabb &box) {
+    glm::dvec3 pad =
+        kEpsilon * (glm::abs(box.max - box.min) + glm::abs(box.min) + glm::abs(box.max)) + 1e-30;
+    Aabb grown;
+    grown.min = box.min - pad;
+    grown.max = box.max + pad;
+    return grown;
+}
+
+// Corner k (0-7: bit 0 x, bit 1 y, bit 2 z high) of `box`.
+glm::dvec3 corner(const Aabb &box, int k) {
+    return {(k & 1) ? box.max.x : box.min.x, (k & 2) ? box.max.y : box.min.y,
+            (k & 4) ? box.max.z : box.min.z};
+}
+
 // Where a box can be seen: the rectangle of image-plane coordinates its rays pass through.
 // Perspective rays leave the eye along forward + x du + y dv, so a point at (a, b, c) is seen at
 // (a / c, b / c) when c > 0, and the rays through a box in front of the eye cross the image
@@ -81,16 +96,12 @@ struct ImageRect {
     double x0, x1, y0, y1;
 };
 bool boxImage(const RayFrame &cam, const Aabb &box, ImageRect &rect, bool &all) {
-    // Grown by a relative margin, so that rounding in the host's own arithmetic cannot cut it.
-    glm::dvec3 pad =
-        kEpsilon * (glm::abs(box.max - box.min) + glm::abs(box.min) + glm::abs(box.max)) + 1e-30;
-    glm::dvec3 lo = box.min - pad, hi = box.max + pad;
+    Aabb grown = padded(box);
     rect = {INFINITY, -INFINITY, INFINITY, -INFINITY};
     all = false;
     bool inFront = false, reachesBack = false;
     for (int k = 0; k < 8; ++k) {
-        glm::dvec3 p((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
-        glm::dvec3 abc = cam.toImage * (p - cam.eye);
+        glm::dvec3 abc = cam.toImage * (corner(grown, k) - cam.eye);
         inFront = inFront || abc.z > 0.0;
         if (cam.parallel) {
             rect = {std::min(rect.x0, abc.x), std::max(rect.x1, abc.x), std::min(rect.y0, abc.y),
@@ -109,10 +120,6 @@ bool boxImage(const RayFrame &cam, const Aabb &box, ImageRect &rect, bool &all) 
     all = inFront && reachesBack;
     return inFront;
 }
-
-} // namespace
-
-namespace {
 
 // The blocks of a grid of at most `blocks` per axis over `grid`'s box that some primitive
 // overlaps.
@@ -262,23 +269,20 @@ std::vector<uint8_t> tilesSeeingBoxes(const gpu::GpuFrameParams &frame, const Ra
 // less what du and dv add to it for a camera whose axes are not quite square. With a relative
 // margin far above the shader's rounding (a few 1e-7 of t), and never below 0.
 double distanceBeforeBox(const RayFrame &cam, const Aabb &box) {
-    glm::dvec3 pad =
-        kEpsilon * (glm::abs(box.max - box.min) + glm::abs(box.min) + glm::abs(box.max)) + 1e-30;
-    glm::dvec3 lo = box.min - pad, hi = box.max + pad;
+    Aabb grown = padded(box);
     double t;
     if (cam.parallel) {
         double ff = glm::dot(cam.forward, cam.forward);
         t = INFINITY;
-        for (int k = 0; k < 8; ++k) {
-            glm::dvec3 p((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
-            t = std::min(t, glm::dot(p - cam.eye, cam.forward) / ff);
-        }
+        for (int k = 0; k < 8; ++k)
+            t = std::min(t, glm::dot(corner(grown, k) - cam.eye, cam.forward) / ff);
         // Samples lie within a pixel of the image: |x|, |y| < 1.1 for any image of 20 pixels.
         t -= 1.1 *
              (std::abs(glm::dot(cam.du, cam.forward)) + std::abs(glm::dot(cam.dv, cam.forward))) /
              ff;
     } else {
-        t = glm::length(glm::max(glm::max(lo - cam.eye, cam.eye - hi), glm::dvec3(0.0)));
+        t = glm::length(
+            glm::max(glm::max(grown.min - cam.eye, cam.eye - grown.max), glm::dvec3(0.0)));
     }
     return std::max(0.0, t * (1.0 - 1e-4));
 }
