@@ -19,7 +19,7 @@ namespace {
 
 class SceneUpload : public GpuTest {};
 
-// In place: the device-local buffers are mapped and hold the packed bytes, then zeros; staged:
+// In place: the device-local buffers are mapped and hold the packed bytes; staged:
 // none is mapped.
 TEST_F(SceneUpload, InPlaceWhereTheDeviceSharesTheHostsMemory) {
     Scene scene = stabilityScene();
