@@ -210,21 +210,29 @@ void addResumeCounts(bool unfinished, bool stuck) {
     }
 }
 
-// One atomic per subgroup and counter: the lanes' counts are summed first.
+// Each lane adds its own non-zero counts to its workgroup's slot (GpuStats::rayCounts).
 void addCounts(uint primary, uint shadow, uint secondary, uint loopCut) {
-    uvec4 total = subgroupAdd(uvec4(primary, shadow, secondary, loopCut));
-    if (subgroupElect()) {
-        if (total.x != 0u) atomicAdd(stats.primaryRays, uint64_t(total.x));
-        if (total.y != 0u) atomicAdd(stats.shadowRays, uint64_t(total.y));
-        if (total.z != 0u) atomicAdd(stats.secondaryRays, uint64_t(total.z));
-        if (total.w != 0u) atomicAdd(stats.loopCutPixels, uint64_t(total.w));
-    }
+    uint slot = (gl_WorkGroupID.x + 7u * gl_WorkGroupID.y) % kRayCountSlots;
+    if (primary != 0u) atomicAdd(stats.rayCounts[slot].primary, uint64_t(primary));
+    if (shadow != 0u) atomicAdd(stats.rayCounts[slot].shadow, uint64_t(shadow));
+    if (secondary != 0u) atomicAdd(stats.rayCounts[slot].secondary, uint64_t(secondary));
+    if (loopCut != 0u) atomicAdd(stats.rayCounts[slot].loopCut, uint64_t(loopCut));
+}
+
+// The camera rays of a tile (of the frame's tile list) that lie inside the image: one lane
+// adds them all, as they are known from the tile's place (every such pixel traces its ray).
+uint tileCameraRays(uvec2 tileOrigin) {
+    if (gl_LocalInvocationIndex != 0u)
+        return 0u;
+    uvec2 inside = min(uvec2(8u), frame.image.xy - tileOrigin);
+    return inside.x * inside.y;
 }
 
 void main() {
     // The pixel: resumable tracing dispatches a rectangle of tiles from the frame's tile origin;
     // otherwise each workgroup takes one entry of the frame's tile list (render/traced_tiles.h).
     uvec2 pixel;
+    uint cameraRays = 0u;   // this lane's share of the workgroup's camera rays, to count
     float cameraFrom = 0.0; // where camera rays' grid walks start
     if (RESUMABLE) {
         pixel = uvec2(frameTileOriginX(frame), frameTileOriginY(frame)) + gl_GlobalInvocationID.xy;
@@ -242,6 +250,7 @@ void main() {
         pixel = tileListOrigin(tile) +
                 uvec2((group & 1u) * 4u + (lane & 3u), (group >> 1u) * 2u + (lane >> 2u));
         cameraFrom = tileListStart(tile);
+        cameraRays = tileCameraRays(tileListOrigin(tile));
     }
     profileStart();
     uint64_t invocationStart = profileClock();
@@ -308,7 +317,10 @@ void main() {
         if (WRITE_AOV && sampleIndex == 0u)
             imageStore(aovImage, ivec2(pixel), aov);
     }
-    addCounts(inside ? 1u : 0u, gShadowRays, gSecondaryRays, (inside && cut) ? 1u : 0u);
+    // Resumable: a pixel's camera ray counts once, when its sample is finished.
+    if (RESUMABLE)
+        cameraRays = inside ? 1u : 0u;
+    addCounts(cameraRays, gShadowRays, gSecondaryRays, (inside && cut) ? 1u : 0u);
     profileAdd(kPhaseOutput, outputStart);
     profileAdd(kPhaseTotal, invocationStart);
     profileFlush();

@@ -179,10 +179,12 @@ FrameResult RayTracer::decodeCounters(const void *snapshot) {
     gpu::GpuStats stats;
     std::memcpy(&stats, snapshot, sizeof(stats));
     FrameResult result;
-    result.rays.primary = stats.primaryRays;
-    result.rays.shadow = stats.shadowRays;
-    result.rays.secondary = stats.secondaryRays;
-    result.loopCutPixels = stats.loopCutPixels;
+    for (const gpu::GpuRayCounts &slot : stats.rayCounts) {
+        result.rays.primary += slot.primary;
+        result.rays.shadow += slot.shadow;
+        result.rays.secondary += slot.secondary;
+        result.loopCutPixels += slot.loopCut;
+    }
     std::copy(std::begin(stats.phaseNs), std::end(stats.phaseNs), result.phaseNs.begin());
     return result;
 }

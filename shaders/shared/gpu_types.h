@@ -225,18 +225,29 @@ PRISM_INLINE uint textureHeight(PRISM_IN(GpuTexture) t) {
     return t.info.z;
 }
 
+// Ray counts, one cache line of them: the tracer spreads its atomics over kRayCountSlots such
+// lines by workgroup, and the host adds them up. Each lane adds its own counts: summing them
+// over the subgroup first (subgroupAdd, a loop over the lanes on lavapipe) cost 3-5% of a frame
+// (docs/benchmarks.md, "Ray counts without a subgroup sum").
+struct GpuRayCounts {
+    uint64_t primary;
+    uint64_t shadow;
+    uint64_t secondary;
+    uint64_t loopCut; // pixels lavapipe's loop limit cut short (loop_limit.glsl)
+    uint64_t unused[4];
+};
+PRISM_CONST(uint, kRayCountSlots, 64u);
+
 // Counters the tracer adds to with atomics (64-bit: a frame can trace billions of rays).
 struct GpuStats {
-    uint64_t primaryRays;
-    uint64_t shadowRays;
-    uint64_t secondaryRays;
-    uint64_t loopCutPixels; // pixels lavapipe's loop limit cut short (loop_limit.glsl)
     // Resumable tracing (resume.glsl): pixels whose sample is not finished after this
     // dispatch, and pixels that cannot finish (more walks than their log holds, or a budget
     // spent before the replay reaches the walk in progress).
     uint64_t unfinishedPixels;
     uint64_t stuckPixels;
     uint64_t phaseNs[kProfileSlots]; // with PRISM_PROFILE: time per phase (profile_phases.h)
+    uint64_t unused[4];              // the slots start on a cache line of their own
+    GpuRayCounts rayCounts[kRayCountSlots];
 };
 
 // Per-frame parameters (push constants, 128 bytes at most).
@@ -342,11 +353,13 @@ static_assert(offsetof(GpuMaterial, optics) == 32);
 static_assert(offsetof(GpuMaterial, maps) == 48);
 static_assert(sizeof(GpuLight) == 32);
 static_assert(sizeof(GpuTexture) == 16);
-static_assert(sizeof(GpuStats) == 128);
-static_assert(offsetof(GpuStats, unfinishedPixels) == 32);
-static_assert(offsetof(GpuStats, phaseNs) == 48);
+static_assert(sizeof(GpuRayCounts) == 64);
+static_assert(offsetof(GpuRayCounts, loopCut) == 24);
+static_assert(offsetof(GpuStats, stuckPixels) == 8);
+static_assert(offsetof(GpuStats, phaseNs) == 16);
+static_assert(offsetof(GpuStats, rayCounts) == 128);
+static_assert(sizeof(GpuStats) == 128 + 64 * kRayCountSlots);
 static_assert(sizeof(GpuResumeRecord) == 64);
-static_assert(offsetof(GpuStats, loopCutPixels) == 24);
 static_assert(sizeof(GpuFrameParams) == 128);
 static_assert(offsetof(GpuFrameParams, seedsAndLoops) == 112);
 static_assert(offsetof(GpuFrameParams, image) == 64);

@@ -680,6 +680,28 @@ TEST_F(TracedTilesRender, ChangeNoPixel) {
         0.9);
 }
 
+// Ray counts: a workgroup counts its tile's camera rays at once, from the tile's place, and each
+// lane its own shadow and secondary rays (shaders/trace.comp, addCounts). On an image that ends
+// in mid-tile both ways, with every tile class and three samples, the camera rays are one per
+// pixel and sample, and all counts are those of resumable tracing, which counts each pixel's
+// camera ray where its sample finishes.
+TEST_F(TracedTilesRender, RayCountsOnImagesThatEndInMidTile) {
+    Scene scene = stabilityScene(); // a reflective floor, spheres, a mesh
+    scene.camera.eye = {0.0, 3.0, 9.0};
+    scene.camera.look = {0.0, 3.5, 0.0}; // sky above the horizon: background tiles too
+    const uint32_t width = 45, height = 27, spp = 3;
+    TracerOptions tiled, resumable;
+    resumable.resumable = true;
+    GpuRender a = renderGpu(context(), scene, width, height, spp, 3, GridOptions{}, tiled);
+    GpuRender b = renderGpu(context(), scene, width, height, spp, 3, GridOptions{}, resumable);
+    EXPECT_EQ(a.frame.rays.primary, uint64_t(width) * height * spp);
+    EXPECT_GT(a.frame.rays.shadow, 0u);
+    EXPECT_GT(a.frame.rays.secondary, 0u);
+    EXPECT_GT(a.frame.tiles[0], 0u); // the full tracer's tiles
+    EXPECT_GT(a.frame.tiles[2], 0u); // the background's
+    expectSameFrame(a, b);
+}
+
 // Camera rays that start their walk at their tile's start distance find what a walk from the
 // grid's entry finds: every pixel, AOV and ray count the same, on both grids, both cameras, at
 // depth 1 and with reflections, with a mesh (the teapot, whose grid is adaptive) and spheres.
