@@ -212,6 +212,8 @@ void addResumeCounts(bool unfinished, bool stuck) {
 
 // Each lane adds its own non-zero counts to its workgroup's slot (GpuStats::rayCounts).
 void addCounts(uint primary, uint shadow, uint secondary, uint loopCut) {
+    // Rows of workgroups offset by 7 slots: resumable tracing's 2D dispatch gives each of
+    // lavapipe's threads its own rows, which would otherwise meet on the same slots.
     uint slot = (gl_WorkGroupID.x + 7u * gl_WorkGroupID.y) % kRayCountSlots;
     if (primary != 0u) atomicAdd(stats.rayCounts[slot].primary, uint64_t(primary));
     if (shadow != 0u) atomicAdd(stats.rayCounts[slot].shadow, uint64_t(shadow));
@@ -224,7 +226,7 @@ void addCounts(uint primary, uint shadow, uint secondary, uint loopCut) {
 uint tileCameraRays(uvec2 tileOrigin) {
     if (gl_LocalInvocationIndex != 0u)
         return 0u;
-    uvec2 inside = min(uvec2(8u), frame.image.xy - tileOrigin);
+    uvec2 inside = min(gl_WorkGroupSize.xy, frame.image.xy - tileOrigin);
     return inside.x * inside.y;
 }
 

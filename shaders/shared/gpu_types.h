@@ -226,9 +226,10 @@ PRISM_INLINE uint textureHeight(PRISM_IN(GpuTexture) t) {
 }
 
 // Ray counts, one cache line of them: the tracer spreads its atomics over kRayCountSlots such
-// lines by workgroup, and the host adds them up. Each lane adds its own counts: summing them
-// over the subgroup first (subgroupAdd, a loop over the lanes on lavapipe) cost 3-5% of a frame
-// (docs/benchmarks.md, "Ray counts without a subgroup sum").
+// lines by workgroup, and the host adds them up. Each lane adds its own shadow and secondary
+// counts, and one lane a workgroup its tile's camera rays: summing them over the subgroup first
+// (subgroupAdd, a loop over the lanes on lavapipe) cost 3-6% of a frame (docs/benchmarks.md,
+// "Ray counts without a subgroup sum").
 struct GpuRayCounts {
     uint64_t primary;
     uint64_t shadow;
