@@ -365,6 +365,7 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
         });
         double hostMs = hostTimer.elapsedMs();
         result.gpuMs += timestamps_.elapsedMs().value_or(hostMs);
+        result.wallMs += hostMs;
         done = end;
         if (progress)
             progress(double(done) / samplesPerPixel);
@@ -379,6 +380,7 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
     if (result.loopCutPixels > 0) {
         FrameResult resumed = renderResumable(camera, samplesPerPixel, progress); // switches
         resumed.gpuMs += result.gpuMs; // the frame's time includes the pass that was cut
+        resumed.wallMs += result.wallMs;
         resumed.loopCutPixels = 0;
         return resumed;
     }

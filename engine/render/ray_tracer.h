@@ -26,6 +26,10 @@ namespace prism {
 
 struct FrameResult {
     double gpuMs = 0.0; // from GPU timestamps, all sample dispatches of the frame
+    // From the host's clock: recording the frame's commands (the tile lists and their start
+    // distances included) to their fences. What a caller waits for a frame; on lavapipe the
+    // timestamps leave out the queue's own start and end of each submission.
+    double wallMs = 0.0;
     RayCounts rays;
     // Pixels lavapipe's loop limit cut short (loop_limit.glsl). renderFrame never returns
     // such a frame: it traces it again resumably (resumeDispatches > 0).

@@ -78,7 +78,9 @@ void RayTracer::traceSampleResumably(const Camera &camera, uint32_t sample,
                                       VK_ACCESS_HOST_READ_BIT);
                 });
                 resetCounters = false;
-                result.gpuMs += timestamps_.elapsedMs().value_or(hostTimer.elapsedMs());
+                double hostMs = hostTimer.elapsedMs();
+                result.gpuMs += timestamps_.elapsedMs().value_or(hostMs);
+                result.wallMs += hostMs;
                 result.resumeDispatches += 1;
                 if (counters->stuckPixels > 0)
                     throw Error(std::to_string(counters->stuckPixels) +

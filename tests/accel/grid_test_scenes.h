@@ -60,6 +60,29 @@ inline Scene clusterInARoom(unsigned seed, int clusterTriangles, int clusterSphe
     return scene;
 }
 
+// A few huge triangles among many tiny ones: long, thin shards on the slant through a dense
+// cluster of tiny triangles and spheres, `size` across, each shard from beyond one side of the
+// cluster to beyond the other, so that it crosses every cell along its path at every level.
+inline Scene shardsThroughACluster(unsigned seed, int clusterTriangles, int shards,
+                                   double size = 2.0) {
+    Scene scene =
+        randomSpheresAndTriangles(seed, clusterTriangles / 10, clusterTriangles, size / 2.0);
+    std::mt19937 rng(seed + 1000);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int i = 0; i < shards; ++i) {
+        glm::dvec3 from(unit(rng), unit(rng), unit(rng)), to(unit(rng), unit(rng), unit(rng));
+        from = 1.5 * size * glm::normalize(from);
+        to = -1.5 * size * glm::normalize(from + 0.5 * to); // the far side, not straight across
+        glm::dvec3 width = 0.01 * size * glm::normalize(glm::dvec3(unit(rng), unit(rng), 1.0));
+        Triangle t;
+        t.p[0] = glm::dvec3(glm::vec3(from - width));
+        t.p[1] = glm::dvec3(glm::vec3(to));
+        t.p[2] = glm::dvec3(glm::vec3(from + width));
+        scene.triangles.push_back(t);
+    }
+    return scene;
+}
+
 // Checks one cell's list against its box: every primitive that overlaps the box is listed, and
 // a listed one overlaps the box grown by 1% (the binner's slack is far smaller).
 // Whether primitive `id` (a sphere or a triangle) overlaps the box [a, b].

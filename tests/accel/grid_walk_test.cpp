@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -80,12 +81,17 @@ glm::dvec3 randomDirection(std::mt19937 &rng) {
     return glm::normalize(d);
 }
 
-void checkRays(const Scene &scene, const Grid &g, unsigned seed, int rays, double span = 14.0) {
+// Rays from random origins within `span` of the origin, in random directions, or, where `aims`
+// has points, towards them in turn.
+void checkRays(const Scene &scene, const Grid &g, unsigned seed, int rays, double span = 14.0,
+               const std::vector<glm::dvec3> &aims = {}) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> coord(-span, span);
     int crossingsChecked = 0;
     for (int r = 0; r < rays; ++r) {
         glm::dvec3 o(coord(rng), coord(rng), coord(rng)), d = randomDirection(rng);
+        if (!aims.empty() && glm::length(aims[r % aims.size()] - o) > 1e-9)
+            d = glm::normalize(aims[r % aims.size()] - o);
         if (r % 7 == 0) // axis-aligned rays exercise the zero-step axes
             d = glm::dvec3(0.0), d[r % 3] = (r % 2) ? 1.0 : -1.0;
         std::vector<Visited> cells = walk(g, o, d);
@@ -179,6 +185,27 @@ TEST(AdaptiveGridWalk, FindsEveryCrossingInAClusterInARoom) {
     EXPECT_GE(g.depth, 2u) << "the cluster is split below the top grid";
     checkRays(scene, g, 5, 1500, 1.5);   // from within the cluster
     checkRays(scene, g, 6, 1500, 700.0); // from anywhere in and around the room
+}
+
+// Shards: a few triangles as long as the scene, thin and on the slant, through a cluster of
+// tiny ones; they sit in every leaf along their paths, beside the cluster's triangles.
+TEST(AdaptiveGridWalk, FindsEveryCrossingAmongHugeAndTinyTriangles) {
+    const int shards = 6;
+    Scene scene = test::shardsThroughACluster(35, 1500, shards);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<glm::dvec3> onShards; // points on the shards, to aim rays at
+    for (int i = 0; i < 200; ++i) {
+        const Triangle &t = scene.triangles[scene.triangles.size() - 1 - i % shards];
+        double u = unit(rng), v = unit(rng) * (1.0 - u);
+        onShards.push_back((1.0 - u - v) * t.p[0] + u * t.p[1] + v * t.p[2]);
+    }
+    for (const char *option : {"adaptive", "regular"}) {
+        Grid g = buildGrid(scene, parseGridOption(option));
+        EXPECT_TRUE(std::string(option) == "regular" || g.depth >= 2u) << "the cluster is split";
+        checkRays(scene, g, 7, 1500, 1.0);           // from within the cluster
+        checkRays(scene, g, 8, 1500, 4.0, onShards); // at the shards, from in and around it
+    }
 }
 
 // Axis-parallel rays that run exactly along voxel faces and start on them.

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/parallel_for.h"
 #include "gpu_fixture.h"
 #include "render/frame_params.h"
 #include "render/plane_shadows.h"
@@ -272,6 +273,32 @@ TEST(TracedTiles, ATileStartsAtTheNearestBoxItSees) {
     starts = tileStartDistances(frame, boxes);
     EXPECT_LE(starts[size_t(3) * 8 + 4], 4.5f);
     EXPECT_GT(starts[size_t(3) * 8 + 4], 4.5f * 0.999f);
+}
+
+// Many boxes are split over threads, each part its own distances: every tile still gets the
+// least of all the boxes' own starts, at any thread count.
+TEST(TracedTiles, ManyBoxesStartWhereEachAloneWould) {
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> unit(-3.0, 3.0);
+    std::vector<Aabb> boxes;
+    for (int i = 0; i < 13000; ++i) { // three parts of at least 4,096 boxes
+        glm::dvec3 lo(unit(rng), unit(rng), unit(rng) - 2.0);
+        boxes.push_back(boxOf(lo, lo + glm::dvec3(0.05)));
+    }
+    Camera camera; // at (0, 0, 5) looking at the origin
+    gpu::GpuFrameParams frame = frameFor(camera, 64, 48);
+    std::vector<float> expected(48, kNoBoxAhead);
+    for (const Aabb &box : boxes) {
+        std::vector<float> alone = tileStartDistances(frame, {box});
+        for (size_t tile = 0; tile < expected.size(); ++tile)
+            expected[tile] = std::min(expected[tile], alone[tile]);
+    }
+    for (unsigned threads : {1u, 2u, 3u}) {
+        ParallelThreads limit(threads);
+        EXPECT_EQ(tileStartDistances(frame, boxes), expected) << threads << " threads";
+    }
+    EXPECT_LT(*std::max_element(expected.begin(), expected.end()), kNoBoxAhead)
+        << "every tile sees a box";
 }
 
 // The blocks hold every primitive: points on every triangle and sphere lie in one of them.

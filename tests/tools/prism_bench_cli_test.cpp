@@ -115,6 +115,10 @@ TEST_F(PrismBenchCli, TableAndJsonForEveryVariant) {
     ASSERT_EQ(doc["results"].size(), 3u);
     for (const auto &result : doc["results"]) {
         EXPECT_EQ(result["frame_ms"].size(), 3u);
+        ASSERT_EQ(result["wall_ms"].size(), 3u);
+        // The wall clock runs from recording to the fence, round the timestamps.
+        for (size_t k = 0; k < 3; ++k)
+            EXPECT_GE(result["wall_ms"][k].get<double>(), result["frame_ms"][k].get<double>());
         EXPECT_EQ(result["rays"]["primary"].get<uint64_t>(), 16u * 12u);
     }
     EXPECT_GT(doc["results"][0]["rays"]["shadow"].get<uint64_t>(), 0u);

@@ -41,8 +41,17 @@ double BenchResult::medianMs() const {
     return median(frameMs);
 }
 
+double BenchResult::medianWallMs() const {
+    return median(wallMs);
+}
+
 double BenchResult::mraysPerSecond() const {
     double ms = medianMs();
+    return ms > 0.0 ? double(rays.total()) / (ms * 1000.0) : 0.0;
+}
+
+double BenchResult::wallMraysPerSecond() const {
+    double ms = medianWallMs();
     return ms > 0.0 ? double(rays.total()) / (ms * 1000.0) : 0.0;
 }
 
@@ -120,11 +129,14 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
                          "/" + std::to_string(settings.runs));
                 FrameResult f = tracers[v]->renderFrame(scene.camera, settings.samplesPerPixel);
                 results[v].frameMs.push_back(f.gpuMs);
+                results[v].wallMs.push_back(f.wallMs);
             }
             if (embree) {
                 progress(name + " embree: frame " + std::to_string(run + 1) + "/" +
                          std::to_string(settings.runs));
-                results.back().frameMs.push_back(embree->traceFrame().ms);
+                double ms = embree->traceFrame().ms;
+                results.back().frameMs.push_back(ms);
+                results.back().wallMs.push_back(ms);
             }
         }
         for (size_t v = 0; v < variants.size() && settings.profile; ++v) {

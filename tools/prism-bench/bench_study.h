@@ -43,10 +43,13 @@ struct BenchResult {
     WalkCounts walk;         // the grid's work per primary ray, counted on the CPU
     double buildMs = 0.0;
     std::vector<double> frameMs; // GPU time of each timed frame (Embree: wall time)
+    std::vector<double> wallMs;  // host wall time of each timed frame (FrameResult::wallMs)
     RayCounts rays;              // of one frame
     std::optional<BenchProfile> profile;
     double medianMs() const;
-    double mraysPerSecond() const; // at the median
+    double medianWallMs() const;
+    double mraysPerSecond() const;     // at the median GPU time
+    double wallMraysPerSecond() const; // at the median wall time
 };
 
 std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::string> &scenes,

@@ -95,6 +95,11 @@ int runScenegen(int argc, char **argv) {
         ->add_option("--triangles", tori.triangles, "Triangles in all, about (18 x count .. 2e7)")
         ->default_val(tori.triangles);
     toriCmd->add_option("--count", tori.count, "Number of tori (1..100)")->default_val(tori.count);
+    toriCmd
+        ->add_option("--shards", tori.shards,
+                     "Long, thin triangles through the whole row (0..64): a few huge triangles "
+                     "among many tiny ones")
+        ->default_val(tori.shards);
     addOutput(toriCmd);
 
     CLI::App *mixedCmd = app.add_subcommand(

@@ -29,10 +29,13 @@ std::string latticeScene(const LatticeOptions &options, const std::string &comma
 std::string latticeCommand(const LatticeOptions &options);
 
 // A row of `count` standing tori, about `triangles` triangles in all, on a floor: the
-// same picture at any tessellation (per-ray cost against triangle count).
+// same picture at any tessellation (per-ray cost against triangle count). `shards` long, thin
+// triangles run through the whole row on the slant: a few huge triangles among many tiny ones,
+// each crossing every cell along its path (the grids' hard case, issue 8).
 struct ToriOptions {
     uint32_t triangles = 100000;
     uint32_t count = 5;
+    uint32_t shards = 0;
 };
 std::string toriScene(const ToriOptions &options, const std::string &command);
 std::string toriCommand(const ToriOptions &options);

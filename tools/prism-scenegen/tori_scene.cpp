@@ -12,8 +12,9 @@
 namespace prism::scenegen {
 
 std::string toriCommand(const ToriOptions &o) {
-    return "prism-scenegen tori --triangles " + std::to_string(o.triangles) + " --count " +
-           std::to_string(o.count);
+    std::string command = "prism-scenegen tori --triangles " + std::to_string(o.triangles) +
+                          " --count " + std::to_string(o.count);
+    return o.shards ? command + " --shards " + std::to_string(o.shards) : command;
 }
 
 // Segments round the tube for `triangles` over `count` tori of 3m x m quads (2 triangles each).
@@ -24,6 +25,8 @@ int minorSegments(const ToriOptions &o) {
 std::string toriScene(const ToriOptions &o, const std::string &command) {
     if (o.count < 1 || o.count > 100)
         throw Error("--count must be in [1, 100], got " + std::to_string(o.count));
+    if (o.shards > 64)
+        throw Error("--shards must be in [0, 64], got " + std::to_string(o.shards));
     if (o.triangles < 18 * o.count || o.triangles > 20'000'000)
         throw Error("--triangles must be in [18 x count, 20000000], got " +
                     std::to_string(o.triangles));
@@ -59,6 +62,22 @@ std::string toriScene(const ToriOptions &o, const std::string &command) {
         writeSolid(out,
                    placed(ring, 1.0, 0.0, {pitch * k - 0.5 * length, major + minor + 0.2, 0.0}),
                    "torus" + std::to_string(k));
+    }
+    if (o.shards == 0)
+        return out.str();
+    // Each shard: a base half a unit tall beyond one end of the row, its tip beyond the other,
+    // rising or falling and crossing the row's depth, so that it cuts through the tori.
+    out.comment(std::to_string(o.shards) +
+                " shards: long, thin triangles through the whole row (huge among tiny).");
+    out.line("material shard color 0.8 0.75 0.6 specular 0.6 shininess 96");
+    const double x0 = -0.5 * length - major - 1.5, x1 = 0.5 * length + major + 1.5;
+    const double top = 2.0 * (major + minor) + 0.2;
+    for (uint32_t k = 0; k < o.shards; ++k) {
+        double s = (k + 0.5) / o.shards;
+        double y0 = 0.4 + s * (top - 0.8), y1 = top - 0.4 - s * (top - 0.8);
+        double z0 = (s - 0.5) * 2.0 * (major + minor), z1 = -z0;
+        Solid shard{{{x0, y0 - 0.25, z0}, {x1, y1, z1}, {x0, y0 + 0.25, z0}}, {{0, 1, 2}}};
+        writeSolid(out, shard, "shard");
     }
     return out.str();
 }
