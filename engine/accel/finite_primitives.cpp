@@ -72,4 +72,19 @@ bool FinitePrimitives::overlapsBox(uint32_t id, const glm::dvec3 &boxMin,
     return triangleOverlapsBox(t.p[0], t.p[1], t.p[2], boxMin, boxMax);
 }
 
+bool FinitePrimitives::surfaceMayMeetBox(uint32_t id, const glm::dvec3 &boxMin,
+                                         const glm::dvec3 &boxMax) const {
+    if (!overlapsBox(id, boxMin, boxMax))
+        return false;
+    PrimitiveIds::Decoded p = ids_.decode(id);
+    if (p.kind != gpu::kKindSphere)
+        return true;
+    // Inside when the farthest corner is, with a margin far above the rounding of this sum.
+    const Sphere &s = scene_.spheres[p.index];
+    glm::dvec3 c = s.center;
+    glm::dvec3 far = glm::max(glm::abs(boxMin - c), glm::abs(boxMax - c));
+    double r = double(s.radius);
+    return glm::dot(far, far) >= r * r * (1.0 - 1e-6);
+}
+
 } // namespace prism

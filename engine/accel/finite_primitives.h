@@ -22,6 +22,9 @@ public:
     // Closed sets: touching counts as overlap. An instance counts as its box (in world space,
     // the bounds of its prototype's box placed), which holds every triangle of the placement.
     bool overlapsBox(uint32_t id, const glm::dvec3 &boxMin, const glm::dvec3 &boxMax) const;
+    // Whether the primitive's surface may meet the box: as overlapsBox, less a box wholly inside
+    // a sphere (a ray reaches such a box only through the surface in front of it).
+    bool surfaceMayMeetBox(uint32_t id, const glm::dvec3 &boxMin, const glm::dvec3 &boxMax) const;
 
 private:
     const Scene &scene_;

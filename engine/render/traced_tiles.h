@@ -35,24 +35,32 @@ inline TileRect imageTiles(uint32_t width, uint32_t height) {
     return {0, 0, (width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize};
 }
 
-// What a camera ray can hit, in the coordinates the tracer uses: boxes that hold every finite
-// primitive between them (the occupied blocks of a coarse grid over the scene grid's box, so
-// that the tiles between the parts of an object are not traced) and the planes as (unit normal,
-// offset) with n.p = offset on the plane.
+// What a camera ray can hit, in the coordinates the tracer uses: boxes that hold the surface of
+// every finite primitive between them (the occupied blocks of a coarse grid over the scene grid's
+// box, so that the tiles between the parts of an object are not traced) and the planes as (unit
+// normal, offset) with n.p = offset on the plane.
 struct SceneExtent {
     std::vector<Aabb> boxes;
     std::vector<glm::dvec4> planes;
     // Finer blocks for tileStartDistances: a tile's rays start their walk at the nearest block
     // they may meet, so small blocks start them nearer the geometry. (The tile classes keep the
-    // coarse ones: their plane shadows are priced per box.)
+    // coarse ones: their plane shadows are priced per box.) Each primitive's own bounds, tried
+    // instead where there are few, started rays earlier: a large slanted triangle's bounds
+    // reach far in front of it (objects 1.14x trace time, bunny 1.07x).
     std::vector<Aabb> startBoxes;
 };
 
-// The blocks of a grid of at most kExtentBlocks per axis over `grid`'s box that some finite
-// primitive of `scene` overlaps (FinitePrimitives::overlapsBox: exact for triangles), the same
-// of kStartBlocks per axis, and the planes.
+// The blocks of a grid of at most kExtentBlocks per axis over `grid`'s box that the surface of
+// some finite primitive of `scene` may meet (FinitePrimitives::surfaceMayMeetBox: exact for
+// triangles; a sphere's inside is left out), the same at kStartBlocks per axis, and the planes.
+// Each frame projects every box on the host while the device waits, so a scene whose surfaces
+// fill many blocks gets coarser ones: at most kMaxExtentBoxes and kMaxStartBoxes (halving the
+// blocks per axis down to 8). Without the caps, 5,000 spheres had 1.7 million start blocks,
+// 58 ms of host time a frame against a trace of 59.
 constexpr uint32_t kExtentBlocks = 32;
 constexpr uint32_t kStartBlocks = 128;
+constexpr size_t kMaxExtentBoxes = 4096;
+constexpr size_t kMaxStartBoxes = 16384;
 SceneExtent sceneExtent(const Scene &scene, const Grid &grid);
 
 // For each tile of the image (imageTiles, row by row): 1 where a camera ray of `frame`, at any
@@ -80,7 +88,7 @@ std::vector<uint8_t> tileClasses(const gpu::GpuFrameParams &frame, const SceneEx
 // starts a camera ray's grid walk there: the walk from the grid's entry crossed every empty
 // cell between the camera and the geometry, up to two thirds of a ray's cells (tori of 1M
 // triangles: 4.8 of 7.3 cells a ray that hits; docs/benchmarks.md, "Camera rays start at
-// the geometry"). The boxes must hold every finite primitive (sceneExtent's do).
+// the geometry"). The boxes must hold every finite primitive's surface (sceneExtent's do).
 constexpr float kNoBoxAhead = std::numeric_limits<float>::max();
 std::vector<float> tileStartDistances(const gpu::GpuFrameParams &frame,
                                       const std::vector<Aabb> &boxes);

@@ -301,18 +301,27 @@ TEST(TracedTiles, ManyBoxesStartWhereEachAloneWould) {
         << "every tile sees a box";
 }
 
-// The blocks hold every primitive: points on every triangle and sphere lie in one of them.
-TEST(TracedTiles, TheExtentsBlocksHoldEveryPrimitive) {
+// The blocks hold every primitive's surface: points on every triangle and sphere lie in one of
+// them. `primitives` more small spheres (a packed mass of them where there are many) are added
+// to the stability scene; the boxes stay within their caps.
+void expectExtentHoldsEverySurface(int primitives) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     Scene scene = stabilityScene();
     addTriangle(scene, {-6.0f, 0.1f, -5.0f}, {6.0f, 0.3f, -4.0f}, {0.0f, 5.0f, -6.0f}, 0);
+    for (int i = 0; i < primitives; ++i) {
+        Sphere s = scene.spheres.front();
+        s.center = glm::dvec3(4.0 * unit(rng) - 2.0, 1.0 + 2.0 * unit(rng), 4.0 * unit(rng) - 2.0);
+        s.radius = float(0.1 + 0.3 * unit(rng));
+        scene.spheres.push_back(s);
+    }
     Grid grid = buildGrid(scene);
     SceneExtent extent = sceneExtent(scene, grid);
     ASSERT_EQ(extent.planes.size(), 1u);
     uint32_t blocks = kExtentBlocks * kExtentBlocks * kExtentBlocks;
     EXPECT_LT(extent.boxes.size(), blocks / 4) << "mostly empty space here";
-    EXPECT_GT(extent.startBoxes.size(), extent.boxes.size()) << "the start blocks are finer";
+    EXPECT_LE(extent.boxes.size(), kMaxExtentBoxes);
+    EXPECT_LE(extent.startBoxes.size(), kMaxStartBoxes);
     auto heldBy = [&](const std::vector<Aabb> &boxes, glm::dvec3 p) {
         for (const Aabb &b : boxes)
             if (glm::all(glm::greaterThanEqual(p, b.min)) && glm::all(glm::lessThanEqual(p, b.max)))
@@ -328,14 +337,44 @@ TEST(TracedTiles, TheExtentsBlocksHoldEveryPrimitive) {
             glm::dvec3 p = t.p[0] + u * (t.p[1] - t.p[0]) + v * (t.p[2] - t.p[0]);
             EXPECT_TRUE(held(p)) << p.x << "," << p.y << "," << p.z;
         }
-    for (const Sphere &s : scene.spheres)
-        for (int k = 0; k < 200; ++k) {
+    // In a packed mass, the first few hundred spheres (alike: the boxes are searched one by one).
+    size_t spheres = std::min<size_t>(scene.spheres.size(), 300);
+    for (size_t i = 0; i < spheres; ++i)
+        for (int k = 0; k < (primitives > 0 ? 20 : 200); ++k) {
+            const Sphere &s = scene.spheres[i];
             double z = 2.0 * unit(rng) - 1.0, phi = 6.283185307 * unit(rng);
             double r = std::sqrt(1.0 - z * z);
             glm::dvec3 p =
                 s.center + double(s.radius) * glm::dvec3(r * std::cos(phi), r * std::sin(phi), z);
             EXPECT_TRUE(held(p)) << p.x << "," << p.y << "," << p.z;
         }
+}
+
+TEST(TracedTiles, TheExtentsBlocksHoldEveryPrimitive) {
+    expectExtentHoldsEverySurface(0);
+}
+
+// Tiny triangles scattered through a volume fill eight times the blocks a level, not four as
+// a surface does: a level past the cap is made and dropped, never kept.
+TEST(TracedTiles, ScatteredTrianglesKeepTheBlocksWithinTheirCaps) {
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<float> unit(-5.0f, 5.0f);
+    Scene scene = stabilityScene();
+    for (int i = 0; i < 40000; ++i) {
+        glm::vec3 p(unit(rng), unit(rng) + 6.0f, unit(rng));
+        addTriangle(scene, p, p + glm::vec3(0.01f, 0.0f, 0.0f), p + glm::vec3(0.0f, 0.01f, 0.0f),
+                    0);
+    }
+    SceneExtent extent = sceneExtent(scene, buildGrid(scene));
+    EXPECT_LE(extent.boxes.size(), kMaxExtentBoxes);
+    EXPECT_LE(extent.startBoxes.size(), kMaxStartBoxes);
+    EXPECT_GT(extent.startBoxes.size(), kMaxStartBoxes / 8) << "not coarser than it needs";
+}
+
+// A packed mass of spheres: blocks coarser than the finest, where the spheres' surfaces would
+// fill too many.
+TEST(TracedTiles, TheExtentsBlocksHoldEverySurfaceOfAPackedMass) {
+    expectExtentHoldsEverySurface(int(kMaxStartBoxes) + 100);
 }
 
 // lavapipe gives each thread one contiguous share of a dispatch: every share of the row order
