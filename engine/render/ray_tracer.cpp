@@ -50,7 +50,7 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
       walkLog_(context, 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false), timestamps_(context) {
     if (features_.profile > 0 && !context.shaderClockEnabled())
         throw Error("profiling needs a Vulkan context created with the shader clock");
-    extent_ = sceneExtent(scene, grid);
+    extent_ = sceneExtent(scene, grid, options.maxStartBoxes);
     createImages(width, height);
     createPipeline();
     if (options.cullMissTiles)

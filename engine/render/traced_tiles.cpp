@@ -209,7 +209,7 @@ std::vector<Aabb> occupiedBlocksUpTo(const FinitePrimitives &primitives, const G
 
 } // namespace
 
-SceneExtent sceneExtent(const Scene &scene, const Grid &grid) {
+SceneExtent sceneExtent(const Scene &scene, const Grid &grid, size_t maxStartBoxes) {
     SceneExtent extent;
     for (const Plane &p : scene.planes) {
         glm::dvec3 n(p.normal);
@@ -219,7 +219,7 @@ SceneExtent sceneExtent(const Scene &scene, const Grid &grid) {
     if (primitives.count() == 0)
         return extent;
     extent.boxes = occupiedBlocksUpTo(primitives, grid, kExtentBlocks, kMaxExtentBoxes);
-    extent.startBoxes = occupiedBlocksUpTo(primitives, grid, kStartBlocks, kMaxStartBoxes);
+    extent.startBoxes = occupiedBlocksUpTo(primitives, grid, kStartBlocks, maxStartBoxes);
     return extent;
 }
 

@@ -61,7 +61,8 @@ constexpr uint32_t kExtentBlocks = 32;
 constexpr uint32_t kStartBlocks = 128;
 constexpr size_t kMaxExtentBoxes = 4096;
 constexpr size_t kMaxStartBoxes = 16384;
-SceneExtent sceneExtent(const Scene &scene, const Grid &grid);
+SceneExtent sceneExtent(const Scene &scene, const Grid &grid,
+                        size_t maxStartBoxes = kMaxStartBoxes);
 
 // For each tile of the image (imageTiles, row by row): 1 where a camera ray of `frame`, at any
 // sample position in the tile, may hit a box or a plane of `extent`; 0 where every one provably

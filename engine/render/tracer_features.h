@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "accel/grid.h"
+#include "render/traced_tiles.h"
 #include "scene/scene.h"
 #include "vk/descriptor_set.h"
 
@@ -50,6 +51,9 @@ struct TracerOptions {
     // (render/traced_tiles.h, tileStartDistances) instead of where they enter the grid; off
     // only to measure what that saves (prism-bench no-tile-starts). Needs cullMissTiles.
     bool tileStarts = true;
+    // At most this many start blocks (render/traced_tiles.h, kMaxStartBoxes): every frame projects
+    // each on the host. Other values only to measure the trade (prism-bench start-boxes=N).
+    size_t maxStartBoxes = kMaxStartBoxes;
     // Grids of one kind: each cell entry's primitive stored in list order, so a test fetches no
     // primitive id first (triangles: GpuCellTriangle, 48 bytes an entry; spheres: centre and
     // radius, 16 bytes); off only to measure what that saves (prism-bench no-cell-primitives).

@@ -32,14 +32,15 @@ protected:
 TEST_F(PrismBenchCli, HelpNamesTheVariants) {
     CliResult r = bench("--help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char *word : {"--variants", "--runs", "density=L", "no-shadows", "offset=E",
-                             "triangle=mt", "--keep-origin", "--save-images", "For the studies"})
+    for (const char *word :
+         {"--variants", "--runs", "density=L", "no-shadows", "offset=E", "triangle=mt",
+          "start-boxes=N", "--keep-origin", "--save-images", "For the studies"})
         EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 
 TEST_F(PrismBenchCli, BadVariantIsNamed) {
     for (const char *variant : {"fast", "offset=0", "offset=-1", "offset=x", "offset=inf",
-                                "density=0", "triangle=fast"}) {
+                                "density=0", "triangle=fast", "start-boxes=0"}) {
         CliResult r = bench(scene_.string() + " --variants auto," + variant);
         EXPECT_NE(r.exitCode, 0) << variant;
         EXPECT_NE(r.out.find(variant), std::string::npos) << r.out;
