@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/timer.h"
 #include "render/frame_params.h"
+#include "render/lavapipe_threads.h"
 #include "render/plane_shadows.h"
 #include "shaders/trace.comp.spv.h"
 #include "shaders/trace_background.comp.spv.h"
@@ -56,6 +57,8 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     if (options.cullMissTiles)
         missPipeline_ = createTracerPipeline(features_.backgroundOnly(), Module::BackgroundOnly);
     tileStarts_ = options.cullMissTiles && options.tileStarts;
+    // A GPU schedules workgroups its own way: there the order of the rows does not matter.
+    dispatchShares_ = context.isLavapipe() && options.rowsByThread ? lavapipeDispatchShares() : 0;
     size_t mirror = 0;
     PlaneTiles mode = planeTilesMode(scene, mirror);
     if (options.cullMissTiles && options.cullPlaneTiles && mode != PlaneTiles::Never)
@@ -254,7 +257,7 @@ TileLists RayTracer::frameTiles(const gpu::GpuFrameParams &params) {
     std::vector<float> starts;
     if (tileStarts_)
         starts = tileStartDistances(params, extent_.startBoxes);
-    return tileLists(lastTileClasses_, imageTiles(width_, height_), starts);
+    return tileLists(lastTileClasses_, imageTiles(width_, height_), starts, dispatchShares_);
 }
 
 void RayTracer::recordTileList(VkCommandBuffer commands, const TileLists &lists) {

@@ -192,6 +192,7 @@ private:
     std::optional<PlaneTileGuards> planeGuards_;
     std::vector<uint8_t> lastTileClasses_; // FrameResult::tiles of the last recordSamples
     bool tileStarts_ = false;              // TracerOptions::tileStarts, where the tiles are culled
+    uint32_t dispatchShares_ = 0; // lavapipe: the threads a dispatch is split among; else 0
 };
 
 } // namespace prism

@@ -393,7 +393,15 @@ std::vector<float> tileStartDistances(const gpu::GpuFrameParams &frame,
     return std::move(partStarts[0]);
 }
 
-std::vector<uint32_t> spreadRowOrder(uint32_t rows) {
+std::vector<uint32_t> spreadRowOrder(uint32_t rows, uint32_t shares) {
+    if (shares > 0) {
+        std::vector<uint32_t> order;
+        order.reserve(rows);
+        for (uint32_t s = 0; s < shares; ++s)
+            for (uint32_t r = s; r < rows; r += shares)
+                order.push_back(r);
+        return order;
+    }
     uint32_t bits = 0;
     while ((1u << bits) < rows)
         ++bits;
@@ -410,11 +418,11 @@ std::vector<uint32_t> spreadRowOrder(uint32_t rows) {
 }
 
 TileLists tileLists(const std::vector<uint8_t> &classes, const TileRect &image,
-                    const std::vector<float> &starts) {
+                    const std::vector<float> &starts, uint32_t shares) {
     TileLists lists;
     lists.tiles.reserve(size_t(image.width()) * image.height());
     lists.starts.reserve(size_t(image.width()) * image.height());
-    std::vector<uint32_t> rows = spreadRowOrder(image.y1);
+    std::vector<uint32_t> rows = spreadRowOrder(image.y1, shares);
     for (uint8_t wanted : {kTileFull, kTilePlanesOnly, kTileBackground})
         for (uint32_t ty : rows)
             for (uint32_t tx = 0; tx < image.x1; ++tx) {

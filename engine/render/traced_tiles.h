@@ -104,7 +104,12 @@ std::vector<float> tileStartDistances(const gpu::GpuFrameParams &frame,
 // and the other the bottom; where the costly rows lie in one half (a sky above a floor), one
 // thread idled for much of the frame. Rows in bit-reversed order give every contiguous share
 // rows from all over the image, so the shares cost about the same for any number of threads,
-// and each row's tiles still go to one thread together.
+// and each row's tiles still go to one thread together. Where the number of threads is known
+// (`shares`), share s takes the rows r = s (mod shares) in order instead: as balanced, and the
+// threads sweep the image down side by side, neighbouring rows at once, so that what one row
+// reads is still in the shared cache for the next (one run of 15 frames each against the
+// bit-reversed order, median wall time: tori of 100k triangles 0.95x, 1M 0.98x, the full
+// bunny 0.96x, others 0.99-1.01x).
 struct TileLists {
     std::vector<uint32_t> tiles;
     std::vector<float> starts; // each tile's tileStartDistances entry (0: from the eye)
@@ -112,11 +117,14 @@ struct TileLists {
     uint32_t traced = 0;
 };
 TileLists tileLists(const std::vector<uint8_t> &classes, const TileRect &image,
-                    const std::vector<float> &starts = {});
+                    const std::vector<float> &starts = {}, uint32_t shares = 0);
 // Every tile of `image` for the full tracer (culling off).
 TileLists allTiles(const TileRect &image);
-// 0 .. rows - 1 in the order of their bit-reversed indices (0, 4, 2, 6, 1, 5, 3, 7 for 8).
-std::vector<uint32_t> spreadRowOrder(uint32_t rows);
+// 0 .. rows - 1 for a dispatch that `shares` threads split into contiguous shares: with
+// shares > 0, the rows r = s (mod shares) in order for s = 0, 1, ... (0, 2, 4, 6, 1, 3, 5, 7 for
+// 8 rows and 2); with 0 (unknown), the order of their bit-reversed indices (0, 4, 2, 6, 1, 5,
+// 3, 7 for 8).
+std::vector<uint32_t> spreadRowOrder(uint32_t rows, uint32_t shares = 0);
 inline uint32_t packTile(uint32_t x, uint32_t y) {
     return x | (y << 16);
 }

@@ -54,6 +54,10 @@ struct TracerOptions {
     // At most this many start blocks (render/traced_tiles.h, kMaxStartBoxes): every frame projects
     // each on the host. Other values only to measure the trade (prism-bench start-boxes=N).
     size_t maxStartBoxes = kMaxStartBoxes;
+    // On lavapipe, each thread's share of a dispatch takes every n-th row in order (n threads:
+    // render/traced_tiles.h, spreadRowOrder); off: rows in bit-reversed order, as for a device
+    // whose scheduling is unknown (prism-bench variant bit-reversed-rows).
+    bool rowsByThread = true;
     // Grids of one kind: each cell entry's primitive stored in list order, so a test fetches no
     // primitive id first (triangles: GpuCellTriangle, 48 bytes an entry; spheres: centre and
     // radius, 16 bytes); off only to measure what that saves (prism-bench no-cell-primitives).

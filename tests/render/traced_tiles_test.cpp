@@ -13,6 +13,7 @@
 #include "core/parallel_for.h"
 #include "gpu_fixture.h"
 #include "render/frame_params.h"
+#include "render/lavapipe_threads.h"
 #include "render/plane_shadows.h"
 #include "render/traced_tiles.h"
 #include "render_helpers.h"
@@ -378,28 +379,55 @@ TEST(TracedTiles, TheExtentsBlocksHoldEverySurfaceOfAPackedMass) {
 }
 
 // lavapipe gives each thread one contiguous share of a dispatch: every share of the row order
-// must hold rows from all over the image, for two threads and for three.
+// must hold rows from all over the image, for two threads and for three when their number is
+// not known (bit-reversed order), and for the number given when it is, each share's rows then
+// in order, down the image.
 TEST(TracedTiles, EveryShareOfTheRowOrderSpansTheImage) {
-    for (uint32_t rows : {1u, 2u, 7u, 96u, 100u, 256u}) {
-        std::vector<uint32_t> order = spreadRowOrder(rows);
-        std::vector<uint32_t> sorted = order;
-        std::sort(sorted.begin(), sorted.end());
-        for (uint32_t r = 0; r < rows; ++r)
-            ASSERT_EQ(sorted[r], r) << "a permutation of " << rows << " rows";
-        if (rows < 96)
-            continue;
-        for (uint32_t shares : {2u, 3u})
-            for (uint32_t share = 0; share < shares; ++share) {
-                // Rows of this share in each eighth of the image: about 1/shares of each.
-                std::vector<uint32_t> perEighth(8, 0);
-                for (uint32_t i = rows * share / shares; i < rows * (share + 1) / shares; ++i)
-                    perEighth[order[i] * 8 / rows] += 1;
-                for (uint32_t count : perEighth) {
-                    EXPECT_GE(count * shares * 8, rows * 2 / 3) << rows << " rows, share " << share;
-                    EXPECT_LE(count * shares * 8, rows * 3 / 2) << rows << " rows, share " << share;
-                }
+    for (uint32_t known : {0u, 1u, 2u, 3u})
+        for (uint32_t rows : {1u, 2u, 7u, 96u, 100u, 256u}) {
+            std::vector<uint32_t> order = spreadRowOrder(rows, known);
+            std::vector<uint32_t> sorted = order;
+            std::sort(sorted.begin(), sorted.end());
+            ASSERT_EQ(sorted.size(), rows);
+            for (uint32_t r = 0; r < rows; ++r)
+                ASSERT_EQ(sorted[r], r) << "a permutation of " << rows << " rows";
+            if (known > 0) { // `known` runs down the image, one after the other
+                uint32_t descents = 0;
+                for (uint32_t i = 1; i < rows; ++i)
+                    descents += order[i - 1] > order[i] ? 1u : 0u;
+                EXPECT_LE(descents + 1, std::max(1u, std::min(known, rows))) << rows << " rows";
             }
-    }
+            if (rows < 96)
+                continue;
+            for (uint32_t shares :
+                 known > 0 ? std::vector<uint32_t>{known} : std::vector<uint32_t>{2u, 3u})
+                for (uint32_t share = 0; share < shares; ++share) {
+                    // Rows of this share in each eighth of the image: about 1/shares of each.
+                    std::vector<uint32_t> perEighth(8, 0);
+                    uint32_t first = rows * share / shares, last = rows * (share + 1) / shares;
+                    for (uint32_t i = first; i < last; ++i)
+                        perEighth[order[i] * 8 / rows] += 1;
+                    for (uint32_t count : perEighth) {
+                        EXPECT_GE(count * shares * 8, rows * 2 / 3)
+                            << rows << " rows, share " << share << ", known " << known;
+                        EXPECT_LE(count * shares * 8, rows * 3 / 2)
+                            << rows << " rows, share " << share << ", known " << known;
+                    }
+                }
+        }
+}
+
+// lavapipe's threads as Mesa counts them: one per CPU from two CPUs up, LP_NUM_THREADS when it
+// is a whole number, at most 16; a dispatch on no thread pool is one share.
+TEST(TracedTiles, LavapipeSharesADispatchAsMesaDoes) {
+    EXPECT_EQ(lavapipeDispatchShares(2, nullptr), 2u);
+    EXPECT_EQ(lavapipeDispatchShares(1, nullptr), 1u);
+    EXPECT_EQ(lavapipeDispatchShares(0, nullptr), 1u);
+    EXPECT_EQ(lavapipeDispatchShares(8, "3"), 3u);
+    EXPECT_EQ(lavapipeDispatchShares(8, "0"), 1u);
+    EXPECT_EQ(lavapipeDispatchShares(8, "three"), 8u);
+    EXPECT_EQ(lavapipeDispatchShares(8, ""), 8u);
+    EXPECT_EQ(lavapipeDispatchShares(64, nullptr), 16u);
 }
 
 TEST(TracedTiles, TheListsCoverTheImageOnceByClass) {

@@ -49,6 +49,8 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.tracer.cullPlaneTiles = false;
         } else if (token == "no-tile-starts") {
             v.tracer.tileStarts = false;
+        } else if (token == "bit-reversed-rows") {
+            v.tracer.rowsByThread = false;
         } else if (token.rfind("start-boxes=", 0) == 0) {
             v.tracer.maxStartBoxes = size_t(parsePositive(text, token.substr(12), "start-boxes"));
         } else if (token == "no-cell-primitives") {
@@ -69,7 +71,7 @@ BenchVariant parseBenchVariant(const std::string &text) {
             throw Error("variant " + text + ": unknown part '" + token +
                         "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
                         "no-reflection, no-refraction, no-shadows, no-cull, no-plane-tiles, "
-                        "no-tile-starts, start-boxes=N, "
+                        "no-tile-starts, start-boxes=N, bit-reversed-rows, "
                         "no-cell-primitives, texel, "
                         "storage, "
                         "resumable, offset=relative|E, triangle=watertight|mt, flat; join with +)");
