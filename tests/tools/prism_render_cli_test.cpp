@@ -96,10 +96,12 @@ TEST_F(PrismRenderCli, StatsLineAndExrWithAovsAndMetadata) {
                       " --size 24x16 --spp 2 --repeat 3 --aov z,normal --stats --validation");
     ASSERT_EQ(r.exitCode, 0) << r.out;
     nlohmann::json stats = nlohmann::json::parse(r.stdoutOnly);
-    for (const char *key :
-         {"build_ms", "trace_ms", "trace_ms_median", "mrays_per_s", "rays", "grid_choice",
-          "grid_cells", "grid_bytes", "grid_cells_per_primary_ray", "grid_tests_per_primary_ray"})
+    for (const char *key : {"build_ms", "trace_ms", "trace_ms_median", "wall_ms", "wall_ms_median",
+                            "mrays_per_s", "rays", "grid_choice", "grid_cells", "grid_bytes",
+                            "grid_cells_per_primary_ray", "grid_tests_per_primary_ray"})
         EXPECT_TRUE(stats.contains(key)) << key;
+    // The host's clock runs round the timestamps.
+    EXPECT_GE(stats["wall_ms"].get<double>(), stats["trace_ms"].get<double>());
     EXPECT_EQ(stats["grid_choice"].get<std::string>().rfind("regular", 0), 0u)
         << "one sphere: --grid auto keeps the regular grid";
     EXPECT_GT(stats["grid_tests_per_primary_ray"].get<double>(), 0.0);

@@ -37,7 +37,8 @@ struct VulkanPhases {
 // What one backend produced: the image and the per-frame timings.
 struct RenderOutcome {
     OutputImage image;
-    std::vector<double> frameMs;         // timed frames only (after warm-up)
+    std::vector<double> frameMs;         // timed frames only (after warm-up): GPU timestamps
+    std::vector<double> wallMs;          // the same frames by the host's clock (FrameResult)
     RayCounts rays;                      // of one frame
     uint32_t resumeDispatches = 0;       // of the last frame, when traced resumably
     std::array<uint32_t, 3> tiles{};     // of the last frame: FrameResult::tiles
@@ -81,8 +82,10 @@ RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const G
         // renderFrame traces a frame that overran lavapipe's loop limit again, resumably.
         out.resumeDispatches = result.resumeDispatches;
         out.tiles = result.tiles;
-        if (frame > 0)
+        if (frame > 0) {
             out.frameMs.push_back(result.gpuMs);
+            out.wallMs.push_back(result.wallMs);
+        }
         out.rays = result.rays;
     }
     progress.finish();
@@ -120,6 +123,7 @@ RenderOutcome renderOnCpu(const RenderOptions &o, const Scene &scene) {
         Timer timer;
         rendered = renderReference(scene, settings, [&](double f) { progress.update(label, f); });
         out.frameMs.push_back(timer.elapsedMs());
+        out.wallMs.push_back(out.frameMs.back());
     }
     progress.finish();
     out.rays = rendered.rays;
@@ -212,6 +216,10 @@ void runRender(const RenderOptions &o) {
             {"build_ms", buildMs},
             {"trace_ms", bestMs},
             {"trace_ms_median", medianMs},
+            // What a caller waits a frame (the host's share included): the GPU timestamps
+            // leave out the host's per-frame work and the queue's own start and end.
+            {"wall_ms", *std::min_element(out.wallMs.begin(), out.wallMs.end())},
+            {"wall_ms_median", median(out.wallMs)},
             {"frames", out.frameMs.size()},
             {"rays",
              {{"primary", out.rays.primary},
