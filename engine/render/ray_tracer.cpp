@@ -227,7 +227,11 @@ void RayTracer::recordSamples(VkCommandBuffer commands, const Camera &camera, ui
                               uint32_t count, uint32_t samplesPerPixel) {
     gpu::GpuFrameParams params = frameParams(camera, samplesPerPixel);
     // The same camera for every sample: which tiles may hit something is found once.
-    TileLists lists = frameTiles(params);
+    recordSamples(commands, params, frameTiles(params), firstSample, count);
+}
+
+void RayTracer::recordSamples(VkCommandBuffer commands, gpu::GpuFrameParams params,
+                              const TileLists &lists, uint32_t firstSample, uint32_t count) {
     recordTileList(commands, lists);
     for (uint32_t s = firstSample; s < firstSample + count; ++s) {
         setFrameSample(params, s);
@@ -352,6 +356,11 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
     FrameResult result;
     uint32_t chunks = progress ? std::min(samplesPerPixel, 20u) : 1u;
     uint32_t done = 0;
+    // The tile lists once a frame, however many submissions its samples take.
+    Timer listTimer;
+    gpu::GpuFrameParams params = frameParams(camera, samplesPerPixel);
+    TileLists lists = frameTiles(params);
+    result.wallMs += listTimer.elapsedMs();
     for (uint32_t chunk = 0; chunk < chunks; ++chunk) {
         uint32_t end = uint32_t(uint64_t(samplesPerPixel) * (chunk + 1) / chunks);
         Timer hostTimer;
@@ -360,7 +369,7 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
             if (chunk == 0)
                 recordResetCounters(commands);
             timestamps_.recordStart(commands);
-            recordSamples(commands, camera, done, end - done, samplesPerPixel);
+            recordSamples(commands, params, lists, done, end - done);
             timestamps_.recordEnd(commands);
             vk::memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                               VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,

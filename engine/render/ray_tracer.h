@@ -116,6 +116,9 @@ private:
     // next dispatch read the accumulation it wrote.
     void recordDispatch(VkCommandBuffer commands, const gpu::GpuFrameParams &params,
                         uint32_t groupsX, uint32_t groupsY);
+    // recordSamples with the frame's parameters and tile lists already made.
+    void recordSamples(VkCommandBuffer commands, gpu::GpuFrameParams params, const TileLists &lists,
+                       uint32_t firstSample, uint32_t count);
     // The class of each tile for `params`' camera (render/traced_tiles.h, tileClasses); all
     // full when culling is off.
     std::vector<uint8_t> frameTileClasses(const gpu::GpuFrameParams &params) const;

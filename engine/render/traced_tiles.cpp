@@ -189,20 +189,22 @@ std::vector<Aabb> occupiedBlocks(const FinitePrimitives &primitives, const Grid 
     return boxes;
 }
 
-// The occupied blocks at the finest of 8, 16, ... up to `finest` per axis that has at most
-// `maxBoxes` of them (8 per axis whatever the count). Every frame projects each box, so the
-// count is what the host pays; a surface's blocks grow fourfold a level, so a level whose
-// coarser one already has more than a quarter of `maxBoxes` is not made.
+// The occupied blocks at 8, 16, ... up to `finest` per axis: the finest level made that has at
+// most `maxBoxes` of them (8 per axis whatever the count). Every frame projects each box, so
+// the count is what the host pays. A surface's blocks grow about fourfold a level, so a level
+// whose coarser one already has more than a quarter of `maxBoxes` is not made (a scene whose
+// blocks grow less, small scattered objects, may so stop a level short of the cap).
 std::vector<Aabb> occupiedBlocksUpTo(const FinitePrimitives &primitives, const Grid &grid,
                                      uint32_t finest, size_t maxBoxes) {
     uint32_t blocks = std::min(8u, finest);
     std::vector<Aabb> boxes = occupiedBlocks(primitives, grid, blocks);
     while (blocks < finest && 4 * boxes.size() <= maxBoxes) {
-        std::vector<Aabb> finer = occupiedBlocks(primitives, grid, 2 * blocks);
+        uint32_t next = std::min(2 * blocks, finest);
+        std::vector<Aabb> finer = occupiedBlocks(primitives, grid, next);
         if (finer.size() > maxBoxes)
             break;
         boxes = std::move(finer);
-        blocks *= 2;
+        blocks = next;
     }
     return boxes;
 }

@@ -323,6 +323,9 @@ void expectExtentHoldsEverySurface(int primitives) {
     EXPECT_LT(extent.boxes.size(), blocks / 4) << "mostly empty space here";
     EXPECT_LE(extent.boxes.size(), kMaxExtentBoxes);
     EXPECT_LE(extent.startBoxes.size(), kMaxStartBoxes);
+    if (primitives == 0) {
+        EXPECT_GT(extent.startBoxes.size(), extent.boxes.size()) << "the start blocks are finer";
+    }
     auto heldBy = [&](const std::vector<Aabb> &boxes, glm::dvec3 p) {
         for (const Aabb &b : boxes)
             if (glm::all(glm::greaterThanEqual(p, b.min)) && glm::all(glm::lessThanEqual(p, b.max)))
@@ -772,6 +775,35 @@ TEST_F(TracedTilesRender, ChangeNoPixel) {
     EXPECT_LT(
         tracedShare(tilesThatMayHit(frameFor(centred.camera, 70, 50), sceneExtent(centred, grid))),
         0.9);
+}
+
+// The eye inside a large sphere (its blocks there left out of the extent: rays reach them only
+// through the shell), and inside a glass one among others: the same frame culled as traced in
+// full, both cameras.
+TEST_F(TracedTilesRender, AnEyeInsideASphereChangesNoPixel) {
+    Scene scene = stabilityScene();
+    scene.camera.eye = {0.0, 1.5, 4.0};
+    scene.camera.look = {0.0, 1.0, 0.0};
+    Sphere room = scene.spheres.front();
+    room.center = {0.3, 1.2, 3.5};
+    room.radius = 12.0f;
+    Scene inRoom = scene;
+    inRoom.spheres.push_back(room);
+    Scene inGlass = scene;
+    Sphere glass = room;
+    glass.radius = 1.0f;
+    glass.material = addMaterial(inGlass, opticalMaterial("glass", 0.1f, 0.9f, 1.5f));
+    inGlass.spheres.push_back(glass);
+    Scene parallel = inGlass;
+    parallel.camera.orthoHeight = 4.0f;
+    for (const Scene *s : {&inRoom, &inGlass, &parallel}) {
+        TracerOptions culled, full;
+        culled.writeAov = full.writeAov = true;
+        full.cullMissTiles = false;
+        GpuRender a = renderGpu(context(), *s, 70, 50, 2, 3, GridOptions{}, culled);
+        GpuRender b = renderGpu(context(), *s, 70, 50, 2, 3, GridOptions{}, full);
+        expectSameFrame(a, b);
+    }
 }
 
 // Ray counts: a workgroup counts its tile's camera rays at once, from the tile's place, and each

@@ -39,8 +39,9 @@ TEST_F(PrismBenchCli, HelpNamesTheVariants) {
 }
 
 TEST_F(PrismBenchCli, BadVariantIsNamed) {
-    for (const char *variant : {"fast", "offset=0", "offset=-1", "offset=x", "offset=inf",
-                                "density=0", "triangle=fast", "start-boxes=0"}) {
+    for (const char *variant :
+         {"fast", "offset=0", "offset=-1", "offset=x", "offset=inf", "density=0", "triangle=fast",
+          "start-boxes=0", "start-boxes=0.5", "start-boxes=1e30"}) {
         CliResult r = bench(scene_.string() + " --variants auto," + variant);
         EXPECT_NE(r.exitCode, 0) << variant;
         EXPECT_NE(r.out.find(variant), std::string::npos) << r.out;

@@ -20,6 +20,17 @@ float parsePositive(const std::string &variant, const std::string &value, const 
     return number;
 }
 
+// A whole number from 1 to 2^31.
+size_t parseCount(const std::string &variant, const std::string &value, const char *key) {
+    size_t number = 0;
+    auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), number);
+    if (ec != std::errc() || end != value.data() + value.size() || number == 0 ||
+        number > (size_t(1) << 31))
+        throw Error("variant " + variant + ": " + key +
+                    " must be a whole number from 1 to 2^31, not '" + value + "'");
+    return number;
+}
+
 } // namespace
 
 BenchVariant parseBenchVariant(const std::string &text) {
@@ -52,7 +63,7 @@ BenchVariant parseBenchVariant(const std::string &text) {
         } else if (token == "bit-reversed-rows") {
             v.tracer.rowsByThread = false;
         } else if (token.rfind("start-boxes=", 0) == 0) {
-            v.tracer.maxStartBoxes = size_t(parsePositive(text, token.substr(12), "start-boxes"));
+            v.tracer.maxStartBoxes = parseCount(text, token.substr(12), "start-boxes");
         } else if (token == "no-cell-primitives") {
             v.tracer.cellPrimitives = false;
         } else if (token == "resumable") {
