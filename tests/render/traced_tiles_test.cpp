@@ -738,7 +738,18 @@ TEST(TracedTiles, NoRayOfAMirrorRoomsTileWithoutTheGridMeetsTheGridsGeometry) {
     EXPECT_GT(wallReflections, size_t(5000)) << "reflections that meet a wall were checked";
 }
 
-class TracedTilesRender : public GpuTest {};
+class TracedTilesRender : public GpuTest {
+protected:
+    // The frame culled and traced in full: every pixel, AOV and ray count the same.
+    void expectCullingChangesNoPixel(const Scene &scene) {
+        TracerOptions culled, full;
+        culled.writeAov = full.writeAov = true;
+        full.cullMissTiles = false;
+        GpuRender a = renderGpu(context(), scene, 70, 50, 2, 3, GridOptions{}, culled);
+        GpuRender b = renderGpu(context(), scene, 70, 50, 2, 3, GridOptions{}, full);
+        expectSameFrame(a, b);
+    }
+};
 
 // Culling is an optimisation only: every pixel, AOV and ray count as without it, for a view
 // with background above and beside the scene, an environment, soft shadows and both cameras.
@@ -760,14 +771,8 @@ TEST_F(TracedTilesRender, ChangeNoPixel) {
     parallel.camera.orthoHeight = 5.0f;
     Scene floating = scene; // no floor: background all round the objects
     floating.planes.clear();
-    for (const Scene *s : {&scene, &withSky, &parallel, &floating}) {
-        TracerOptions culled, full;
-        culled.writeAov = full.writeAov = true;
-        full.cullMissTiles = false;
-        GpuRender a = renderGpu(context(), *s, 70, 50, 2, 3, GridOptions{}, culled);
-        GpuRender b = renderGpu(context(), *s, 70, 50, 2, 3, GridOptions{}, full);
-        expectSameFrame(a, b);
-    }
+    for (const Scene *s : {&scene, &withSky, &parallel, &floating})
+        expectCullingChangesNoPixel(*s);
     // And the floating scene did leave tiles to the background.
     Scene centred = floating;
     centerOnCamera(centred);
@@ -796,14 +801,8 @@ TEST_F(TracedTilesRender, AnEyeInsideASphereChangesNoPixel) {
     inGlass.spheres.push_back(glass);
     Scene parallel = inGlass;
     parallel.camera.orthoHeight = 4.0f;
-    for (const Scene *s : {&inRoom, &inGlass, &parallel}) {
-        TracerOptions culled, full;
-        culled.writeAov = full.writeAov = true;
-        full.cullMissTiles = false;
-        GpuRender a = renderGpu(context(), *s, 70, 50, 2, 3, GridOptions{}, culled);
-        GpuRender b = renderGpu(context(), *s, 70, 50, 2, 3, GridOptions{}, full);
-        expectSameFrame(a, b);
-    }
+    for (const Scene *s : {&inRoom, &inGlass, &parallel})
+        expectCullingChangesNoPixel(*s);
 }
 
 // Ray counts: a workgroup counts its tile's camera rays at once, from the tile's place, and each
