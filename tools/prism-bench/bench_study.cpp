@@ -45,14 +45,18 @@ double BenchResult::medianWallMs() const {
     return median(wallMs);
 }
 
-double BenchResult::mraysPerSecond() const {
-    double ms = medianMs();
+namespace {
+double mraysPerSecond(const RayCounts &rays, double ms) {
     return ms > 0.0 ? double(rays.total()) / (ms * 1000.0) : 0.0;
+}
+} // namespace
+
+double BenchResult::mraysPerSecond() const {
+    return prism::mraysPerSecond(rays, medianMs());
 }
 
 double BenchResult::wallMraysPerSecond() const {
-    double ms = medianWallMs();
-    return ms > 0.0 ? double(rays.total()) / (ms * 1000.0) : 0.0;
+    return prism::mraysPerSecond(rays, medianWallMs());
 }
 
 std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::string> &scenes,
