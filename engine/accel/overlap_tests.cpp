@@ -26,6 +26,11 @@ bool separatedOnAxis(const glm::dvec3 &axis, const glm::dvec3 (&v)[3], const glm
 
 bool triangleOverlapsBox(const glm::dvec3 &p0, const glm::dvec3 &p1, const glm::dvec3 &p2,
                          const glm::dvec3 &boxMin, const glm::dvec3 &boxMax) {
+    // A vertex inside the box settles it, exactly and at once: the common case for the small
+    // triangles of a dense mesh against the cells that list them.
+    for (const glm::dvec3 *p : {&p0, &p1, &p2})
+        if (glm::all(glm::greaterThanEqual(*p, boxMin)) && glm::all(glm::lessThanEqual(*p, boxMax)))
+            return true;
     glm::dvec3 center = 0.5 * (boxMin + boxMax), half = 0.5 * (boxMax - boxMin);
     const glm::dvec3 v[3] = {p0 - center, p1 - center, p2 - center};
     // Box face normals: the triangle's bounding box against the box.

@@ -122,8 +122,9 @@ private:
     // The class of each tile for `params`' camera (render/traced_tiles.h, tileClasses); all
     // full when culling is off.
     std::vector<uint8_t> frameTileClasses(const gpu::GpuFrameParams &params) const;
-    // The frame's tile lists by class, the classes kept for lastTileClasses.
-    TileLists frameTiles(const gpu::GpuFrameParams &params);
+    // The frame's tile lists by class, the classes kept for lastTileClasses; with `reuse`, the
+    // last lists where they were made for the same parameters. Valid until the next call.
+    const TileLists &frameTiles(const gpu::GpuFrameParams &params, bool reuse);
     // Writes `lists` into the tile list inside the command buffer (so that frames in flight
     // each read their own), ordered after earlier dispatches' reads and before later ones.
     void recordTileList(VkCommandBuffer commands, const TileLists &lists);
@@ -194,7 +195,15 @@ private:
     // TracerOptions::cullPlaneTiles, planeTilesMode, and shadows with a bound.
     std::optional<PlaneTileGuards> planeGuards_;
     std::vector<uint8_t> lastTileClasses_; // FrameResult::tiles of the last recordSamples
-    bool tileStarts_ = false;              // TracerOptions::tileStarts, where the tiles are culled
+    // The last tile lists made and the frame parameters they were made for: they follow from
+    // those alone, and the viewer asks again at every progressive sample of a resting camera.
+    struct KeptTiles {
+        std::optional<gpu::GpuFrameParams> params;
+        std::vector<uint8_t> classes;
+        TileLists lists;
+    };
+    KeptTiles keptTiles_;
+    bool tileStarts_ = false;     // TracerOptions::tileStarts, where the tiles are culled
     uint32_t dispatchShares_ = 0; // lavapipe: the threads a dispatch is split among; else 0
 };
 

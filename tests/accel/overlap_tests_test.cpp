@@ -32,6 +32,23 @@ TEST(TriangleOverlapsBox, InsideCrossingAndAlongTheBoxBoundingBox) {
     EXPECT_TRUE(triangleOverlapsBox({2.5, 0, 0}, {0, 2.5, 0}, {0, 0, 2.5}, kLo, kHi));
 }
 
+// A vertex on the box's boundary (a face, an edge, a corner) touches the box: the closed box
+// overlaps, whatever the rest of the triangle does. The test settles this case first.
+TEST(TriangleOverlapsBox, AVertexOnTheBoundaryTouches) {
+    const glm::dvec3 far1(5.0, 7.0, -4.0), far2(6.0, -3.0, 8.0);
+    for (const glm::dvec3 &v : {glm::dvec3(1.0, 0.5, 0.5), glm::dvec3(0.0, 1.0, 0.3),
+                                glm::dvec3(1.0, 1.0, 1.0), glm::dvec3(0.0, 0.0, 0.0)}) {
+        EXPECT_TRUE(triangleOverlapsBox(v, far1, far2, kLo, kHi));
+        EXPECT_TRUE(triangleOverlapsBox(far1, v, far2, kLo, kHi));
+        EXPECT_TRUE(triangleOverlapsBox(far1, far2, v, kLo, kHi));
+    }
+    // Just outside the same points, with the rest of the triangle leaning away: no overlap.
+    EXPECT_FALSE(
+        triangleOverlapsBox({1.0 + 1e-9, 0.5, 0.5}, {3.0, 0.5, 0.5}, {3.0, 0.6, 0.5}, kLo, kHi));
+    EXPECT_FALSE(
+        triangleOverlapsBox({-1e-9, -1e-9, -1e-9}, {-1.0, -2.0, 0.0}, {-2.0, 0.0, -1.0}, kLo, kHi));
+}
+
 // Sample points densely over random triangles: wherever a sample lies inside the box, the
 // test must say they overlap (a false negative would drop a primitive from a cell).
 TEST(TriangleOverlapsBox, NoFalseNegativesOnRandomTriangles) {

@@ -21,6 +21,7 @@
 #include "scene/scene_origin.h"
 #include "scene_builders.h"
 #include "test_scenes.h"
+#include "vk/commands.h"
 
 namespace prism::test {
 namespace {
@@ -803,6 +804,44 @@ TEST_F(TracedTilesRender, AnEyeInsideASphereChangesNoPixel) {
     parallel.camera.orthoHeight = 4.0f;
     for (const Scene *s : {&inRoom, &inGlass, &parallel})
         expectCullingChangesNoPixel(*s);
+}
+
+// A tracer keeps a frame's tile lists while the camera rests (the viewer's progressive
+// samples, one submission each): one that samples a camera, a second one looking elsewhere,
+// then the first again gives each image as a new tracer's frame, and the two cameras do need
+// different tiles.
+TEST_F(TracedTilesRender, KeptTileListsFollowTheCamera) {
+    Scene scene = stabilityScene();
+    scene.camera.eye = {0.0, 3.0, 9.0};
+    scene.camera.look = {0.0, 3.5, 0.0}; // sky above the horizon: background tiles
+    centerOnCamera(scene);               // as renderGpu does; both cameras share these coordinates
+    Grid grid = buildGrid(scene);
+    Camera first = scene.camera, aside = first;
+    aside.look = first.eye + glm::dvec3(-3.0, -1.5, -2.0); // the objects off to one side
+    TracerOptions options;
+    options.writeAov = true;
+    options.maxDepth = 3;
+    const uint32_t spp = 3;
+    RayTracer kept(context(), scene, grid, 70, 50, options);
+    vk::CommandRunner runner(context());
+    std::vector<std::vector<uint8_t>> classes;
+    for (const Camera *camera : {&first, &aside, &first}) {
+        for (uint32_t sample = 0; sample < spp; ++sample)
+            runner.run([&](VkCommandBuffer commands) {
+                kept.recordSamples(commands, *camera, sample, 1, spp);
+            });
+        TracedImage image = kept.readback(spp);
+        classes.push_back(kept.lastTileClasses());
+        RayTracer fresh(context(), scene, grid, 70, 50, options);
+        fresh.renderFrame(*camera, spp);
+        TracedImage expected = fresh.readback(spp);
+        EXPECT_EQ(image.rgba, expected.rgba);
+        EXPECT_EQ(image.depth, expected.depth);
+        EXPECT_EQ(image.normal, expected.normal);
+        EXPECT_EQ(classes.back(), fresh.lastTileClasses());
+    }
+    EXPECT_NE(classes[0], classes[1]);
+    EXPECT_EQ(classes[0], classes[2]);
 }
 
 // Ray counts: a workgroup counts its tile's camera rays at once, from the tile's place, and each
