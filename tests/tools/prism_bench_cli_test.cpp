@@ -1,8 +1,10 @@
 // prism-bench as a user meets it: help, a bad variant, a tiny study's table and JSON, and the
 // studies' switches (variants of replaced methods, saved images, the file's origin).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -32,9 +34,9 @@ protected:
 TEST_F(PrismBenchCli, HelpNamesTheVariants) {
     CliResult r = bench("--help");
     EXPECT_EQ(r.exitCode, 0);
-    for (const char *word :
-         {"--variants", "--runs", "density=L", "no-shadows", "offset=E", "triangle=mt",
-          "start-boxes=N", "--keep-origin", "--save-images", "For the studies"})
+    for (const char *word : {"--variants", "--runs", "density=L", "no-shadows", "offset=E",
+                             "triangle=mt", "start-boxes=N", "--keep-origin", "--save-images",
+                             "For the studies", "--interleave-scenes"})
         EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 
@@ -127,6 +129,46 @@ TEST_F(PrismBenchCli, TableAndJsonForEveryVariant) {
     EXPECT_EQ(doc["results"][2]["rays"]["shadow"].get<uint64_t>(), 0u); // shadows switched off
     EXPECT_EQ(doc["results"][1]["grid"], "off");
     EXPECT_EQ(doc["results"][2]["grid"], "3x3x3");
+}
+
+// --interleave-scenes takes each run's frames across the scenes in turn (scene after scene
+// without it), and prints each scene's per-ray cost against the first's: the median over the
+// runs of each run's ratio, as the JSON's frame times give it.
+TEST_F(PrismBenchCli, InterleavedScenesGiveEachScenesCostAgainstTheFirst) {
+    fs::path more = write("more.scene", "light 2 2 5\nsphere 0 0 0 1\nsphere 1 1 -1 0.5\n"
+                                        "sphere -1 0.5 0 0.4\nsphere 0.5 -0.5 1 0.3\n");
+    fs::path json = dir() / "out.json";
+    std::string scenes = scene_.string() + " " + more.string() + " --size 16x12 --runs 3 ";
+    CliResult plain = bench(scenes + "--variants auto,off");
+    ASSERT_EQ(plain.exitCode, 0) << plain.out;
+    EXPECT_LT(plain.out.find("tiny off: frame 3/3"), plain.out.find("more auto: frame 1/3"));
+    EXPECT_EQ(plain.stdoutOnly.find("Per-ray cost against"), std::string::npos);
+    CliResult r = bench(scenes + "--variants auto,off --interleave-scenes --json " + json.string());
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    size_t secondScene = r.out.find("more auto: frame 1/3");
+    ASSERT_NE(secondScene, std::string::npos) << r.out;
+    EXPECT_LT(secondScene, r.out.find("tiny auto: frame 2/3")) << "frames not interleaved";
+    nlohmann::json doc = nlohmann::json::parse(std::ifstream(json));
+    ASSERT_EQ(doc["results"].size(), 4u);
+    EXPECT_EQ(doc["results"][0]["scene"], "tiny");
+    EXPECT_EQ(doc["results"][2]["scene"], "more");
+    for (int v = 0; v < 2; ++v) {
+        const auto &base = doc["results"][v], &other = doc["results"][v + 2];
+        std::vector<double> ratios;
+        for (size_t k = 0; k < 3; ++k)
+            ratios.push_back((other["frame_ms"][k].get<double>() /
+                              double(other["rays"]["primary"].get<uint64_t>() +
+                                     other["rays"]["shadow"].get<uint64_t>())) /
+                             (base["frame_ms"][k].get<double>() /
+                              double(base["rays"]["primary"].get<uint64_t>() +
+                                     base["rays"]["shadow"].get<uint64_t>())));
+        std::sort(ratios.begin(), ratios.end());
+        std::string row = "| more | " + other["variant"].get<std::string>() + " | ";
+        size_t at = r.stdoutOnly.find(row, r.stdoutOnly.find("Per-ray cost against tiny"));
+        ASSERT_NE(at, std::string::npos) << row << "\n" << r.stdoutOnly;
+        double printed = std::stod(r.stdoutOnly.substr(at + row.size()));
+        EXPECT_NEAR(printed, ratios[1], 0.005 + 1e-9) << row;
+    }
 }
 
 // Embree traces the very rays Prism traces at depth 1: every camera ray, and one shadow ray

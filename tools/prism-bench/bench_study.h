@@ -31,6 +31,10 @@ struct BenchSettings {
     // empty, write each variant's warm-up frame to imageDir/SCENE_VARIANT.exr.
     bool keepOrigin = false;
     std::string imageDir;
+    // Every scene set up first (all in memory at once) and each run's frames taken across all
+    // scenes in turn, as across variants: ratios between scenes (the per-ray cost against a
+    // scene's size) then hold on a noisy machine as ratios between variants do.
+    bool interleaveScenes = false;
 };
 
 struct BenchResult {
@@ -52,6 +56,7 @@ struct BenchResult {
     double wallMraysPerSecond() const; // at the median wall time
 };
 
+// Results scene by scene in the order given, each scene's variants in order, then Embree's.
 std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::string> &scenes,
                                   const std::vector<BenchVariant> &variants,
                                   const BenchSettings &settings,

@@ -13,6 +13,7 @@
 #include "bench_profile.h"
 #include "bench_study.h"
 #include "core/error.h"
+#include "core/median.h"
 #include "embree_baseline.h"
 
 using namespace prism;
@@ -68,6 +69,35 @@ void printTable(const std::vector<BenchResult> &results, const BenchSettings &s,
                     r.walk.cellsPerRay, r.walk.testsPerRay, r.buildMs, r.medianMs(),
                     r.medianWallMs(), r.mraysPerSecond(), (unsigned long long)r.rays.total(),
                     first > 0.0 ? r.medianMs() / first : 0.0, vsEmbree.c_str());
+    }
+}
+
+// With interleaved scenes: each scene's per-ray cost against the first scene's, variant by
+// variant (Embree's too), as the median of each run's ratio: the run's frames were taken back
+// to back, so the machine's drift between runs cancels.
+void printSceneRatios(const std::vector<BenchResult> &results) {
+    if (results.empty())
+        return;
+    const std::string &firstScene = results.front().scene;
+    std::printf("\nPer-ray cost against %s, the same variant (median over the runs of each run's "
+                "ratio):\n\n| scene | variant | by trace ms | by wall ms |\n|---|---|---|---|\n",
+                firstScene.c_str());
+    for (const BenchResult &r : results) {
+        const BenchResult *base = nullptr;
+        for (const BenchResult &b : results)
+            if (b.scene == firstScene && b.variant == r.variant)
+                base = &b;
+        if (!base || r.scene == firstScene || r.rays.total() == 0 || base->rays.total() == 0)
+            continue;
+        auto ratio = [&](const std::vector<double> &ms, const std::vector<double> &baseMs) {
+            std::vector<double> perRun;
+            for (size_t i = 0; i < std::min(ms.size(), baseMs.size()); ++i)
+                perRun.push_back((ms[i] / double(r.rays.total())) /
+                                 (baseMs[i] / double(base->rays.total())));
+            return median(perRun);
+        };
+        std::printf("| %s | %s | %.2f | %.2f |\n", r.scene.c_str(), r.variant.c_str(),
+                    ratio(r.frameMs, base->frameMs), ratio(r.wallMs, base->wallMs));
     }
 }
 
@@ -170,6 +200,11 @@ int main(int argc, char **argv) {
     app.add_flag("--profile", settings.profile,
                  "Also run each variant with in-shader clocks (VK_KHR_shader_clock) and print "
                  "where its time goes: camera, walks, shading, per pixel sample");
+    app.add_flag("--interleave-scenes", settings.interleaveScenes,
+                 "Set up every scene first (all in memory at once) and take each run's frames "
+                 "across all scenes in turn, then print each scene's per-ray cost against the "
+                 "first scene's: for ratios between scenes (cost against scene size) that hold "
+                 "on a noisy machine");
     app.add_option("--json", jsonPath, "Also write every result (all frame times) as JSON");
     app.add_option("--device", deviceFilter, "First Vulkan device whose name contains this");
     CLI11_PARSE(app, argc, argv);
@@ -201,6 +236,8 @@ int main(int argc, char **argv) {
             });
         std::fprintf(stderr, "\n");
         printTable(results, settings, context.deviceName());
+        if (settings.interleaveScenes)
+            printSceneRatios(results);
         if (settings.profile)
             printProfileTable(results);
         if (!jsonPath.empty()) {
