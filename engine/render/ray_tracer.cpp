@@ -146,7 +146,7 @@ void RayTracer::bindImages(vk::ComputePipeline &pipeline) {
 
 void RayTracer::resize(uint32_t width, uint32_t height) {
     vkDeviceWaitIdle(context_.device()); // no submission may still use the old images
-    keptTiles_ = {};                     // lists of the old size's tiles
+    keptTiles_.params.reset();           // defensive: the new size's parameters differ anyway
     createImages(width, height);
     bindImages(*pipeline_);
     if (missPipeline_)
@@ -271,6 +271,7 @@ const TileLists &RayTracer::frameTiles(const gpu::GpuFrameParams &params, bool r
             starts = tileStartDistances(params, extent_.startBoxes);
         kept.lists = tileLists(kept.classes, imageTiles(width_, height_), starts, dispatchShares_);
         kept.params = params;
+        ++kept.made;
     }
     lastTileClasses_ = kept.classes;
     return kept.lists;

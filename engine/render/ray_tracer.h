@@ -81,6 +81,9 @@ public:
     // The class of each 8x8 tile (row by row) in the last frame traced (tileClasses): which
     // tracer ran it. Empty before the first frame and after resumable ones (all full there).
     const std::vector<uint8_t> &lastTileClasses() const { return lastTileClasses_; }
+    // How many times this tracer has made tile lists: once a frame, and once for all the
+    // progressive samples of a resting camera (recordSamples).
+    uint64_t tileListsMade() const { return keptTiles_.made; }
 
     // Resumable tracing (shaders/resume.glsl) for callers that record their own frames (the
     // viewer), once their counters show cut pixels: enableResumable switches this tracer for
@@ -123,7 +126,8 @@ private:
     // full when culling is off.
     std::vector<uint8_t> frameTileClasses(const gpu::GpuFrameParams &params) const;
     // The frame's tile lists by class, the classes kept for lastTileClasses; with `reuse`, the
-    // last lists where they were made for the same parameters. Valid until the next call.
+    // last lists where they were made for the same parameters. Valid until the next call or
+    // resize().
     const TileLists &frameTiles(const gpu::GpuFrameParams &params, bool reuse);
     // Writes `lists` into the tile list inside the command buffer (so that frames in flight
     // each read their own), ordered after earlier dispatches' reads and before later ones.
@@ -201,6 +205,7 @@ private:
         std::optional<gpu::GpuFrameParams> params;
         std::vector<uint8_t> classes;
         TileLists lists;
+        uint64_t made = 0;
     };
     KeptTiles keptTiles_;
     bool tileStarts_ = false;     // TracerOptions::tileStarts, where the tiles are culled

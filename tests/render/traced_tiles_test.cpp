@@ -807,9 +807,9 @@ TEST_F(TracedTilesRender, AnEyeInsideASphereChangesNoPixel) {
 }
 
 // A tracer keeps a frame's tile lists while the camera rests (the viewer's progressive
-// samples, one submission each): one that samples a camera, a second one looking elsewhere,
-// then the first again gives each image as a new tracer's frame, and the two cameras do need
-// different tiles.
+// samples, one submission each): it makes them once per camera, and one that samples a camera,
+// a second one looking elsewhere, then the first again gives each image as a new tracer's
+// frame; the two cameras do need different tiles.
 TEST_F(TracedTilesRender, KeptTileListsFollowTheCamera) {
     Scene scene = stabilityScene();
     scene.camera.eye = {0.0, 3.0, 9.0};
@@ -826,10 +826,12 @@ TEST_F(TracedTilesRender, KeptTileListsFollowTheCamera) {
     vk::CommandRunner runner(context());
     std::vector<std::vector<uint8_t>> classes;
     for (const Camera *camera : {&first, &aside, &first}) {
+        uint64_t made = kept.tileListsMade();
         for (uint32_t sample = 0; sample < spp; ++sample)
             runner.run([&](VkCommandBuffer commands) {
                 kept.recordSamples(commands, *camera, sample, 1, spp);
             });
+        EXPECT_EQ(kept.tileListsMade(), made + 1) << "the lists once for a resting camera";
         TracedImage image = kept.readback(spp);
         classes.push_back(kept.lastTileClasses());
         RayTracer fresh(context(), scene, grid, 70, 50, options);

@@ -145,9 +145,11 @@ TEST_F(PrismBenchCli, InterleavedScenesGiveEachScenesCostAgainstTheFirst) {
     EXPECT_EQ(plain.stdoutOnly.find("Per-ray cost against"), std::string::npos);
     CliResult r = bench(scenes + "--variants auto,off --interleave-scenes --json " + json.string());
     ASSERT_EQ(r.exitCode, 0) << r.out;
-    size_t secondScene = r.out.find("more auto: frame 1/3");
+    size_t secondScene = r.out.find("more auto: frame 1/3"),
+           firstAgain = r.out.find("tiny auto: frame 2/3");
     ASSERT_NE(secondScene, std::string::npos) << r.out;
-    EXPECT_LT(secondScene, r.out.find("tiny auto: frame 2/3")) << "frames not interleaved";
+    ASSERT_NE(firstAgain, std::string::npos) << r.out;
+    EXPECT_LT(secondScene, firstAgain) << "frames not interleaved";
     nlohmann::json doc = nlohmann::json::parse(std::ifstream(json));
     ASSERT_EQ(doc["results"].size(), 4u);
     EXPECT_EQ(doc["results"][0]["scene"], "tiny");
@@ -158,10 +160,12 @@ TEST_F(PrismBenchCli, InterleavedScenesGiveEachScenesCostAgainstTheFirst) {
         for (size_t k = 0; k < 3; ++k)
             ratios.push_back((other["frame_ms"][k].get<double>() /
                               double(other["rays"]["primary"].get<uint64_t>() +
-                                     other["rays"]["shadow"].get<uint64_t>())) /
+                                     other["rays"]["shadow"].get<uint64_t>() +
+                                     other["rays"]["secondary"].get<uint64_t>())) /
                              (base["frame_ms"][k].get<double>() /
                               double(base["rays"]["primary"].get<uint64_t>() +
-                                     base["rays"]["shadow"].get<uint64_t>())));
+                                     base["rays"]["shadow"].get<uint64_t>() +
+                                     base["rays"]["secondary"].get<uint64_t>())));
         std::sort(ratios.begin(), ratios.end());
         std::string row = "| more | " + other["variant"].get<std::string>() + " | ";
         size_t at = r.stdoutOnly.find(row, r.stdoutOnly.find("Per-ray cost against tiny"));

@@ -176,7 +176,6 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
                                   const std::function<void(const std::string &)> &progress) {
     // Scene after scene, each freed before the next is loaded; or, interleaved, every scene
     // set up first and each run's frames taken across all of them in turn.
-    std::vector<std::unique_ptr<SceneStudy>> studies;
     std::vector<BenchResult> all;
     auto finish = [&](SceneStudy &s) {
         profileScene(context, s, variants, settings, progress);
@@ -191,6 +190,7 @@ std::vector<BenchResult> runStudy(vk::Context &context, const std::vector<std::s
         }
         return all;
     }
+    std::vector<std::unique_ptr<SceneStudy>> studies;
     for (const std::string &path : scenes)
         studies.push_back(setUpScene(context, path, variants, settings, progress));
     for (uint32_t run = 0; run < settings.runs; ++run)

@@ -74,30 +74,27 @@ void printTable(const std::vector<BenchResult> &results, const BenchSettings &s,
 
 // With interleaved scenes: each scene's per-ray cost against the first scene's, variant by
 // variant (Embree's too), as the median of each run's ratio: the run's frames were taken back
-// to back, so the machine's drift between runs cancels.
-void printSceneRatios(const std::vector<BenchResult> &results) {
-    if (results.empty())
-        return;
-    const std::string &firstScene = results.front().scene;
+// to back, so the machine's drift between runs cancels. Every scene has `perScene` results in
+// the same order (runStudy), so a result's base is the first scene's result at its place.
+void printSceneRatios(const std::vector<BenchResult> &results, size_t perScene) {
+    if (perScene == 0 || results.size() <= perScene)
+        return; // one scene: nothing to set against it
     std::printf("\nPer-ray cost against %s, the same variant (median over the runs of each run's "
                 "ratio):\n\n| scene | variant | by trace ms | by wall ms |\n|---|---|---|---|\n",
-                firstScene.c_str());
-    for (const BenchResult &r : results) {
-        const BenchResult *base = nullptr;
-        for (const BenchResult &b : results)
-            if (b.scene == firstScene && b.variant == r.variant)
-                base = &b;
-        if (!base || r.scene == firstScene || r.rays.total() == 0 || base->rays.total() == 0)
+                results.front().scene.c_str());
+    for (size_t i = perScene; i < results.size(); ++i) {
+        const BenchResult &r = results[i], &base = results[i % perScene];
+        if (r.rays.total() == 0 || base.rays.total() == 0)
             continue;
         auto ratio = [&](const std::vector<double> &ms, const std::vector<double> &baseMs) {
             std::vector<double> perRun;
-            for (size_t i = 0; i < std::min(ms.size(), baseMs.size()); ++i)
-                perRun.push_back((ms[i] / double(r.rays.total())) /
-                                 (baseMs[i] / double(base->rays.total())));
+            for (size_t k = 0; k < std::min(ms.size(), baseMs.size()); ++k)
+                perRun.push_back((ms[k] / double(r.rays.total())) /
+                                 (baseMs[k] / double(base.rays.total())));
             return median(perRun);
         };
         std::printf("| %s | %s | %.2f | %.2f |\n", r.scene.c_str(), r.variant.c_str(),
-                    ratio(r.frameMs, base->frameMs), ratio(r.wallMs, base->wallMs));
+                    ratio(r.frameMs, base.frameMs), ratio(r.wallMs, base.wallMs));
     }
 }
 
@@ -237,7 +234,7 @@ int main(int argc, char **argv) {
         std::fprintf(stderr, "\n");
         printTable(results, settings, context.deviceName());
         if (settings.interleaveScenes)
-            printSceneRatios(results);
+            printSceneRatios(results, variants.size() + (settings.embreeBaseline ? 1 : 0));
         if (settings.profile)
             printProfileTable(results);
         if (!jsonPath.empty()) {
