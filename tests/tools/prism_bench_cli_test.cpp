@@ -151,6 +151,9 @@ TEST_F(PrismBenchCli, InterleavedScenesGiveEachScenesCostAgainstTheFirst) {
     ASSERT_NE(firstAgain, std::string::npos) << r.out;
     EXPECT_LT(secondScene, firstAgain) << "frames not interleaved";
     nlohmann::json doc = nlohmann::json::parse(std::ifstream(json));
+    EXPECT_EQ(doc["interleave_scenes"], true);
+    EXPECT_EQ(doc["runs"], 3);
+    ASSERT_EQ(doc["scene_ratios"].size(), 2u);
     ASSERT_EQ(doc["results"].size(), 4u);
     EXPECT_EQ(doc["results"][0]["scene"], "tiny");
     EXPECT_EQ(doc["results"][2]["scene"], "more");
@@ -172,6 +175,10 @@ TEST_F(PrismBenchCli, InterleavedScenesGiveEachScenesCostAgainstTheFirst) {
         ASSERT_NE(at, std::string::npos) << row << "\n" << r.stdoutOnly;
         double printed = std::stod(r.stdoutOnly.substr(at + row.size()));
         EXPECT_NEAR(printed, ratios[1], 0.005 + 1e-9) << row;
+        const auto &saved = doc["scene_ratios"][v];
+        EXPECT_EQ(saved["scene"], "more");
+        EXPECT_EQ(saved["variant"], other["variant"]);
+        EXPECT_NEAR(saved["per_ray_cost_by_trace"].get<double>(), ratios[1], 1e-9);
     }
 }
 

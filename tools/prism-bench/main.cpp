@@ -76,13 +76,14 @@ void printTable(const std::vector<BenchResult> &results, const BenchSettings &s,
 // variant (Embree's too), as the median of each run's ratio: the run's frames were taken back
 // to back, so the machine's drift between runs cancels. Every scene has `perScene` results in
 // the same order (runStudy), so a result's base is the first scene's result at its place.
-void printSceneRatios(const std::vector<BenchResult> &results, size_t perScene) {
-    if (perScene == 0 || results.size() <= perScene)
-        return; // one scene: nothing to set against it
-    std::printf("\nPer-ray cost against %s, the same variant (median over the runs of each run's "
-                "ratio):\n\n| scene | variant | by trace ms | by wall ms |\n|---|---|---|---|\n",
-                results.front().scene.c_str());
-    for (size_t i = perScene; i < results.size(); ++i) {
+struct SceneRatio {
+    std::string scene, variant;
+    double byTrace = 0.0, byWall = 0.0;
+};
+
+std::vector<SceneRatio> sceneRatios(const std::vector<BenchResult> &results, size_t perScene) {
+    std::vector<SceneRatio> ratios;
+    for (size_t i = perScene; perScene > 0 && i < results.size(); ++i) {
         const BenchResult &r = results[i], &base = results[i % perScene];
         if (r.rays.total() == 0 || base.rays.total() == 0)
             continue;
@@ -93,9 +94,21 @@ void printSceneRatios(const std::vector<BenchResult> &results, size_t perScene) 
                                  (baseMs[k] / double(base.rays.total())));
             return median(perRun);
         };
-        std::printf("| %s | %s | %.2f | %.2f |\n", r.scene.c_str(), r.variant.c_str(),
-                    ratio(r.frameMs, base.frameMs), ratio(r.wallMs, base.wallMs));
+        ratios.push_back(
+            {r.scene, r.variant, ratio(r.frameMs, base.frameMs), ratio(r.wallMs, base.wallMs)});
     }
+    return ratios;
+}
+
+void printSceneRatios(const std::vector<SceneRatio> &ratios, const std::string &firstScene) {
+    if (ratios.empty())
+        return; // one scene: nothing to set against it
+    std::printf("\nPer-ray cost against %s, the same variant (median over the runs of each run's "
+                "ratio):\n\n| scene | variant | by trace ms | by wall ms |\n|---|---|---|---|\n",
+                firstScene.c_str());
+    for (const SceneRatio &r : ratios)
+        std::printf("| %s | %s | %.2f | %.2f |\n", r.scene.c_str(), r.variant.c_str(), r.byTrace,
+                    r.byWall);
 }
 
 nlohmann::json toJson(const PhaseProfile &p) {
@@ -233,20 +246,32 @@ int main(int argc, char **argv) {
             });
         std::fprintf(stderr, "\n");
         printTable(results, settings, context.deviceName());
-        if (settings.interleaveScenes)
-            printSceneRatios(results, variants.size() + (settings.embreeBaseline ? 1 : 0));
+        std::vector<SceneRatio> ratios;
+        if (settings.interleaveScenes && !results.empty()) {
+            ratios = sceneRatios(results, variants.size() + (settings.embreeBaseline ? 1 : 0));
+            printSceneRatios(ratios, results.front().scene);
+        }
         if (settings.profile)
             printProfileTable(results);
         if (!jsonPath.empty()) {
             nlohmann::json all = nlohmann::json::array();
             for (const BenchResult &r : results)
                 all.push_back(toJson(r));
+            nlohmann::json sceneRatioRows = nlohmann::json::array();
+            for (const SceneRatio &r : ratios)
+                sceneRatioRows.push_back({{"scene", r.scene},
+                                          {"variant", r.variant},
+                                          {"per_ray_cost_by_trace", r.byTrace},
+                                          {"per_ray_cost_by_wall", r.byWall}});
             std::string tmp = jsonPath + ".tmp";
             std::ofstream(tmp) << nlohmann::json{{"device", context.deviceName()},
                                                  {"width", settings.width},
                                                  {"height", settings.height},
                                                  {"spp", settings.samplesPerPixel},
                                                  {"depth", settings.maxDepth},
+                                                 {"runs", settings.runs},
+                                                 {"interleave_scenes", settings.interleaveScenes},
+                                                 {"scene_ratios", sceneRatioRows},
                                                  {"results", all}}
                                       .dump(1)
                                << "\n";
