@@ -25,11 +25,12 @@ public:
              UploadPath path)
         : context_(context), runner_(runner), limits_(limits), path_(path) {}
 
-    SceneArray array(std::span<const std::byte> data, const char *what, TexelLayout texels) {
-        uint64_t bytes = data.size();
+    // An array of `bytes` that write(to) writes, read through storage and texel bindings.
+    template <typename Write>
+    SceneArray array(uint64_t bytes, Write write, const char *what, TexelLayout texels) {
         checkFits(bytes, what, texels);
         SceneArray array;
-        array.buffer = upload(data.data(), bytes, true);
+        array.buffer = upload(bytes, write, true);
         array.texels = vk::BufferView(
             context_, array.buffer.handle(), texels.format,
             std::min<uint64_t>(array.buffer.size(), limits_.texelElements * texels.bytes));
@@ -38,6 +39,15 @@ public:
 
     vk::Buffer upload(const void *data, uint64_t bytes, bool texelView,
                       VkBufferUsageFlags kind = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
+        return upload(
+            bytes, [&](std::byte *to) { std::memcpy(to, data, bytes); }, texelView, kind);
+    }
+
+    // A buffer whose first `bytes` write(to) writes, the rest zeros: where the device shares
+    // the host's memory, straight into the buffer, else into a staging copy.
+    template <typename Write>
+    vk::Buffer upload(uint64_t bytes, Write write, bool texelView,
+                      VkBufferUsageFlags kind = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
         // Vulkan has no empty buffers; unused arrays get one 16-byte element nobody reads.
         VkDeviceSize size = bytes == 0 ? 16 : bytes;
         vk::Buffer target(context_, size,
@@ -45,11 +55,11 @@ public:
                               (texelView ? VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : 0),
                           false, path_ == UploadPath::InPlaceWhereShared);
         if (target.mapped()) { // coherent: the next submission sees the writes
-            fill(target.mapped(), data, bytes, size);
+            fill(target.mapped(), write, bytes, size);
             return target;
         }
         vk::Buffer staging(context_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
-        fill(staging.mapped(), data, bytes, size);
+        fill(staging.mapped(), write, bytes, size);
         runner_.run([&](VkCommandBuffer commands) {
             VkBufferCopy region{0, 0, size};
             vkCmdCopyBuffer(commands, staging.handle(), target.handle(), 1, &region);
@@ -59,9 +69,10 @@ public:
 
 private:
     // The array's bytes, then zeros to the buffer's end.
-    static void fill(void *to, const void *data, uint64_t bytes, VkDeviceSize size) {
+    template <typename Write>
+    static void fill(void *to, Write &write, uint64_t bytes, VkDeviceSize size) {
         if (bytes)
-            std::memcpy(to, data, bytes);
+            write(static_cast<std::byte *>(to));
         std::memset(static_cast<std::byte *>(to) + bytes, 0, size - bytes);
     }
 
@@ -89,13 +100,26 @@ private:
 
 // Every scene array once: where it comes from, its name in errors, its bindings
 // (shared/trace_interface.h) and whether the tracer may read it as texels.
-template <auto member> std::span<const std::byte> bytesOf(const PackedScene &packed) {
-    return std::as_bytes(std::span(packed.*member));
+template <auto member> uint64_t bytesOf(const PackedScene &packed) {
+    return std::as_bytes(std::span(packed.*member)).size();
+}
+template <auto member> void copyOf(const PackedScene &packed, std::byte *to) {
+    std::span<const std::byte> data = std::as_bytes(std::span(packed.*member));
+    std::memcpy(to, data.data(), data.size());
+}
+// The largest array is not held by the packed scene but written here (PackedScene).
+uint64_t cellTriangleBytes(const PackedScene &packed) {
+    return cellTriangleCount(packed) * sizeof(gpu::GpuCellTriangle);
+}
+void writeCellTriangleBytes(const PackedScene &packed, std::byte *to) {
+    writeCellTriangles(packed, std::span(reinterpret_cast<gpu::GpuCellTriangle *>(to),
+                                         size_t(cellTriangleCount(packed))));
 }
 
 struct ArrayBinding {
     SceneArray SceneBuffers::*array;
-    std::span<const std::byte> (*data)(const PackedScene &);
+    uint64_t (*bytes)(const PackedScene &);
+    void (*write)(const PackedScene &, std::byte *to);
     const char *what;
     uint32_t storageBinding;
     uint32_t texelBinding;
@@ -106,36 +130,38 @@ using namespace gpu;
 using P = PackedScene;
 using B = SceneBuffers;
 const ArrayBinding kArrays[] = {
-    {&B::spheres, bytesOf<&P::spheres>, "sphere", kBindingSpheres, kBindingSphereTexels,
-     kVec4Texels},
-    {&B::planes, bytesOf<&P::planes>, "plane", kBindingPlanes, kBindingPlaneTexels, kVec4Texels},
-    {&B::triangles, bytesOf<&P::triangles>, "triangle", kBindingTriangles, kBindingTriangleTexels,
-     kVec4Texels},
-    {&B::triangleShading, bytesOf<&P::triangleShading>, "triangle shading", kBindingTriangleShading,
-     kBindingTriangleShadingTexels, kVec4Texels},
-    {&B::materials, bytesOf<&P::materials>, "material", kBindingMaterials, kBindingMaterialTexels,
-     kVec4Texels},
-    {&B::lights, bytesOf<&P::lights>, "light", kBindingLights, kBindingLightTexels, kVec4Texels},
-    {&B::cellStart, bytesOf<&P::cellStart>, "grid cell offset", kBindingCellStart,
-     kBindingCellStartTexels, kUintTexels},
-    {&B::cellPrimitives, bytesOf<&P::cellPrimitives>, "grid cell primitive", kBindingCellPrimitives,
-     kBindingCellPrimitiveTexels, kUintTexels},
-    {&B::cellTriangles, bytesOf<&P::cellTriangles>, "grid cell triangle", kBindingCellTriangles,
-     kBindingCellTriangleTexels, kUvec4Texels},
-    {&B::cellSpheres, bytesOf<&P::cellSpheres>, "grid cell sphere", kBindingCellSpheres,
-     kBindingCellSphereTexels, kVec4Texels},
-    {&B::textures, bytesOf<&P::textures>, "texture", kBindingTextures, kBindingTextureTexels,
-     kUvec4Texels},
-    {&B::texels, bytesOf<&P::texels>, "texture texel", kBindingTexels, kBindingImageTexels,
-     kVec4Texels},
-    {&B::gridEntries, bytesOf<&P::gridEntries>, "grid voxel map", kBindingGridEntries,
-     kBindingGridEntryTexels, kUintTexels},
-    {&B::cellBoxes, bytesOf<&P::cellBoxes>, "grid cell box", kBindingCellBoxes,
-     kBindingCellBoxTexels, kUvec4Texels},
-    {&B::instances, bytesOf<&P::instances>, "instance", kBindingInstances, kBindingInstanceTexels,
-     kVec4Texels},
-    {&B::meshGrids, bytesOf<&P::meshGrids>, "mesh grid", kBindingMeshGrids, kBindingMeshGridTexels,
-     kUvec4Texels},
+    {&B::spheres, bytesOf<&P::spheres>, copyOf<&P::spheres>, "sphere", kBindingSpheres,
+     kBindingSphereTexels, kVec4Texels},
+    {&B::planes, bytesOf<&P::planes>, copyOf<&P::planes>, "plane", kBindingPlanes,
+     kBindingPlaneTexels, kVec4Texels},
+    {&B::triangles, bytesOf<&P::triangles>, copyOf<&P::triangles>, "triangle", kBindingTriangles,
+     kBindingTriangleTexels, kVec4Texels},
+    {&B::triangleShading, bytesOf<&P::triangleShading>, copyOf<&P::triangleShading>,
+     "triangle shading", kBindingTriangleShading, kBindingTriangleShadingTexels, kVec4Texels},
+    {&B::materials, bytesOf<&P::materials>, copyOf<&P::materials>, "material", kBindingMaterials,
+     kBindingMaterialTexels, kVec4Texels},
+    {&B::lights, bytesOf<&P::lights>, copyOf<&P::lights>, "light", kBindingLights,
+     kBindingLightTexels, kVec4Texels},
+    {&B::cellStart, bytesOf<&P::cellStart>, copyOf<&P::cellStart>, "grid cell offset",
+     kBindingCellStart, kBindingCellStartTexels, kUintTexels},
+    {&B::cellPrimitives, bytesOf<&P::cellPrimitives>, copyOf<&P::cellPrimitives>,
+     "grid cell primitive", kBindingCellPrimitives, kBindingCellPrimitiveTexels, kUintTexels},
+    {&B::cellTriangles, cellTriangleBytes, writeCellTriangleBytes, "grid cell triangle",
+     kBindingCellTriangles, kBindingCellTriangleTexels, kUvec4Texels},
+    {&B::cellSpheres, bytesOf<&P::cellSpheres>, copyOf<&P::cellSpheres>, "grid cell sphere",
+     kBindingCellSpheres, kBindingCellSphereTexels, kVec4Texels},
+    {&B::textures, bytesOf<&P::textures>, copyOf<&P::textures>, "texture", kBindingTextures,
+     kBindingTextureTexels, kUvec4Texels},
+    {&B::texels, bytesOf<&P::texels>, copyOf<&P::texels>, "texture texel", kBindingTexels,
+     kBindingImageTexels, kVec4Texels},
+    {&B::gridEntries, bytesOf<&P::gridEntries>, copyOf<&P::gridEntries>, "grid voxel map",
+     kBindingGridEntries, kBindingGridEntryTexels, kUintTexels},
+    {&B::cellBoxes, bytesOf<&P::cellBoxes>, copyOf<&P::cellBoxes>, "grid cell box",
+     kBindingCellBoxes, kBindingCellBoxTexels, kUvec4Texels},
+    {&B::instances, bytesOf<&P::instances>, copyOf<&P::instances>, "instance", kBindingInstances,
+     kBindingInstanceTexels, kVec4Texels},
+    {&B::meshGrids, bytesOf<&P::meshGrids>, copyOf<&P::meshGrids>, "mesh grid", kBindingMeshGrids,
+     kBindingMeshGridTexels, kUvec4Texels},
 };
 
 } // namespace
@@ -147,7 +173,8 @@ SceneBuffers uploadScene(const vk::Context &context, vk::CommandRunner &runner,
     b.header =
         up.upload(&packed.header, sizeof(packed.header), false, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     for (const ArrayBinding &a : kArrays)
-        b.*a.array = up.array(a.data(packed), a.what, a.texels);
+        b.*a.array = up.array(
+            a.bytes(packed), [&](std::byte *to) { a.write(packed, to); }, a.what, a.texels);
     return b;
 }
 

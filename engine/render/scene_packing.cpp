@@ -1,9 +1,11 @@
 #include "render/scene_packing.h"
 
+#include <algorithm>
 #include <bit>
 #include <string>
 
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "scene/primitive_ids.h"
 
 namespace prism {
@@ -56,23 +58,6 @@ void packInstances(const Scene &scene, const Grid &grid, const std::vector<uint3
              affineRow(toObject, toObjectOffset, 2), affineRow(toWorld, i.translation, 0),
              affineRow(toWorld, i.translation, 1), affineRow(toWorld, i.translation, 2),
              glm::vec4(indexAsFloat(i.prototype, "prototypes"), material, 0.0f, 0.0f)});
-    }
-}
-
-// Each cell entry's triangle, in list order. The grid's ids are triangle indices here: a scene
-// with triangles only numbers them from 0 (scene/primitive_ids.h).
-void packCellTriangles(const Scene &scene, PackedScene &packed) {
-    if (!scene.spheres.empty() || !scene.instances.empty())
-        throw Error("cell triangles need a scene whose grid holds triangles only");
-    auto bits = [](const glm::vec3 &p, uint32_t w) {
-        return glm::uvec4(std::bit_cast<uint32_t>(p.x), std::bit_cast<uint32_t>(p.y),
-                          std::bit_cast<uint32_t>(p.z), w);
-    };
-    packed.cellTriangles.reserve(packed.cellPrimitives.size());
-    for (uint32_t id : packed.cellPrimitives) {
-        const Triangle &t = scene.triangles.at(id);
-        packed.cellTriangles.push_back(
-            {bits(glm::vec3(t.p[0]), id), bits(glm::vec3(t.p[1]), 0), bits(glm::vec3(t.p[2]), 0)});
     }
 }
 
@@ -158,8 +143,12 @@ PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles, 
 
     packed.cellStart = grid.cellStart;
     packed.cellPrimitives = grid.cellPrimitives;
-    if (cellTriangles)
-        packCellTriangles(scene, packed);
+    // The cell triangles are written at upload (writeCellTriangles). The grid's ids are
+    // triangle indices here: a scene with triangles only numbers them from 0
+    // (scene/primitive_ids.h), and those are the first entries of packed.triangles.
+    if (cellTriangles && (!scene.spheres.empty() || !scene.instances.empty()))
+        throw Error("cell triangles need a scene whose grid holds triangles only");
+    packed.cellTriangles = cellTriangles;
     if (cellSpheres)
         packCellSpheres(scene, packed);
     packInstances(scene, grid, firstTriangle, packed);
@@ -170,6 +159,29 @@ PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles, 
     h.voxelSize = glm::vec4(grid.voxelSize(), 0.0f);
     h.voxels = glm::uvec4(glm::uvec3(grid.voxelResolution()), grid.shift);
     return packed;
+}
+
+uint64_t cellTriangleCount(const PackedScene &packed) {
+    return packed.cellTriangles ? packed.cellPrimitives.size() : 0;
+}
+
+void writeCellTriangles(const PackedScene &packed, std::span<gpu::GpuCellTriangle> out) {
+    if (out.size() != cellTriangleCount(packed))
+        throw Error("cell triangle array of " + std::to_string(out.size()) + " entries, not " +
+                    std::to_string(cellTriangleCount(packed)));
+    // In parallel, each block its own entries: the 1M-triangle scene has 5.3M of them, and
+    // the device's fresh memory faults in page by page as it is first written.
+    constexpr size_t kBlock = 1 << 16;
+    parallelFor((out.size() + kBlock - 1) / kBlock, [&](size_t block) {
+        for (size_t k = block * kBlock; k < std::min(out.size(), (block + 1) * kBlock); ++k) {
+            uint32_t id = packed.cellPrimitives[k];
+            const gpu::GpuTriangle &t = packed.triangles.at(id);
+            out[k] = {glm::floatBitsToUint(glm::vec4(glm::vec3(t.v0), 0.0f)),
+                      glm::floatBitsToUint(glm::vec4(glm::vec3(t.v1), 0.0f)),
+                      glm::floatBitsToUint(glm::vec4(glm::vec3(t.v2), 0.0f))};
+            out[k].p0.w = id;
+        }
+    });
 }
 
 } // namespace prism

@@ -1,6 +1,8 @@
 #pragma once
 // Turns the scene and its grid into the flat std430 arrays the tracer reads (shared/gpu_types.h).
 // CPU only, so the packing is unit-tested without a device.
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "accel/grid.h"
@@ -21,7 +23,10 @@ struct PackedScene {
     std::vector<glm::vec4> texels;
     std::vector<uint32_t> cellStart;
     std::vector<uint32_t> cellPrimitives;
-    std::vector<gpu::GpuCellTriangle> cellTriangles; // with cellTriangles only: one per entry
+    // With cellTriangles: each cell entry's triangle (gpu::GpuCellTriangle, 48 bytes), in list
+    // order. Not held here: writeCellTriangles writes it straight into the device's array at
+    // upload, as it is the largest array by far (256 of the 390 MB of 1M triangles).
+    bool cellTriangles = false;
     std::vector<glm::vec4> cellSpheres; // with cellSpheres only: each entry's centre and radius
     std::vector<uint32_t> gridEntries;  // adaptive grid only
     std::vector<glm::uvec4> cellBoxes;  // adaptive grid only
@@ -37,5 +42,11 @@ struct PackedScene {
 // each cell entry's triangle is also stored in list order; likewise with cellSpheres.
 PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles = false,
                       bool cellSpheres = false);
+
+// Entries of the cell triangle array: one per cell entry with cellTriangles, else none.
+uint64_t cellTriangleCount(const PackedScene &packed);
+// Writes the cell triangle array, cellTriangleCount(packed) entries, into `out`, from
+// packed.triangles and packed.cellPrimitives. Throws prism::Error for any other size.
+void writeCellTriangles(const PackedScene &packed, std::span<gpu::GpuCellTriangle> out);
 
 } // namespace prism

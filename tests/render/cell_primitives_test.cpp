@@ -55,10 +55,13 @@ TEST(CellTriangles, AreTheListedTrianglesInListOrder) {
     for (const GridOptions &options : {GridOptions{}, parseGridOption("6")}) {
         Grid grid = buildGrid(scene, options);
         PackedScene packed = packScene(scene, grid, true);
-        ASSERT_EQ(packed.cellTriangles.size(), grid.cellPrimitives.size());
-        ASSERT_GT(packed.cellTriangles.size(), scene.triangles.size()) << "some listed twice";
-        for (size_t k = 0; k < packed.cellTriangles.size(); ++k) {
-            const gpu::GpuCellTriangle &c = packed.cellTriangles[k];
+        std::vector<gpu::GpuCellTriangle> cells(cellTriangleCount(packed));
+        writeCellTriangles(packed, cells);
+        ASSERT_EQ(cells.size(), grid.cellPrimitives.size());
+        ASSERT_GT(cells.size(), scene.triangles.size()) << "some listed twice";
+        EXPECT_THROW(writeCellTriangles(packed, std::span(cells).first(cells.size() - 1)), Error);
+        for (size_t k = 0; k < cells.size(); ++k) {
+            const gpu::GpuCellTriangle &c = cells[k];
             uint32_t id = grid.cellPrimitives[k];
             ASSERT_EQ(gpu::cellTriangleIndex(c.p0), id);
             const gpu::GpuTriangle &t = packed.triangles[id];
@@ -66,9 +69,14 @@ TEST(CellTriangles, AreTheListedTrianglesInListOrder) {
                 EXPECT_EQ(c.p0[axis], std::bit_cast<uint32_t>(t.v0[axis]));
                 EXPECT_EQ(c.p1[axis], std::bit_cast<uint32_t>(t.v1[axis]));
                 EXPECT_EQ(c.p2[axis], std::bit_cast<uint32_t>(t.v2[axis]));
+                // And the scene's own vertex, as a float.
+                EXPECT_EQ(c.p1[axis],
+                          std::bit_cast<uint32_t>(float(scene.triangles[id].p[1][axis])));
             }
+            EXPECT_EQ(c.p1.w, 0u);
+            EXPECT_EQ(c.p2.w, 0u);
         }
-        EXPECT_TRUE(packScene(scene, grid).cellTriangles.empty());
+        EXPECT_EQ(cellTriangleCount(packScene(scene, grid)), 0u);
     }
     Scene withSphere = scene;
     withSphere.spheres.push_back(Sphere{{0.0, 3.0, 0.0}, 0.5f, 0});
