@@ -98,28 +98,35 @@ private:
     UploadPath path_;
 };
 
-// Every scene array once: where it comes from, its name in errors, its bindings
-// (shared/trace_interface.h) and whether the tracer may read it as texels.
-template <auto member> uint64_t bytesOf(const PackedScene &packed) {
-    return std::as_bytes(std::span(packed.*member)).size();
-}
-template <auto member> void copyOf(const PackedScene &packed, std::byte *to) {
-    std::span<const std::byte> data = std::as_bytes(std::span(packed.*member));
-    std::memcpy(to, data.data(), data.size());
-}
-// The largest array is not held by the packed scene but written here (PackedScene).
-uint64_t cellTriangleBytes(const PackedScene &packed) {
-    return cellTriangleCount(packed) * sizeof(gpu::GpuCellTriangle);
-}
-void writeCellTriangleBytes(const PackedScene &packed, std::byte *to) {
-    writeCellTriangles(packed, std::span(reinterpret_cast<gpu::GpuCellTriangle *>(to),
-                                         size_t(cellTriangleCount(packed))));
-}
-
-struct ArrayBinding {
-    SceneArray SceneBuffers::*array;
+// Where an array's bytes come from: their count, and a writer of them.
+struct ArraySource {
     uint64_t (*bytes)(const PackedScene &);
     void (*write)(const PackedScene &, std::byte *to);
+};
+
+// A vector of the packed scene, copied.
+template <auto member> constexpr ArraySource fromPacked() {
+    return {
+        [](const PackedScene &p) { return uint64_t(std::as_bytes(std::span(p.*member)).size()); },
+        [](const PackedScene &p, std::byte *to) {
+            std::span<const std::byte> data = std::as_bytes(std::span(p.*member));
+            std::memcpy(to, data.data(), data.size());
+        }};
+}
+
+// The largest array is not held by the packed scene but written here (PackedScene).
+constexpr ArraySource kCellTriangles{
+    [](const PackedScene &p) { return cellTriangleCount(p) * sizeof(gpu::GpuCellTriangle); },
+    [](const PackedScene &p, std::byte *to) {
+        writeCellTriangles(p, std::span(reinterpret_cast<gpu::GpuCellTriangle *>(to),
+                                        size_t(cellTriangleCount(p))));
+    }};
+
+// Every scene array once: where it comes from, its name in errors, its bindings
+// (shared/trace_interface.h) and whether the tracer may read it as texels.
+struct ArrayBinding {
+    SceneArray SceneBuffers::*array;
+    ArraySource source;
     const char *what;
     uint32_t storageBinding;
     uint32_t texelBinding;
@@ -130,37 +137,37 @@ using namespace gpu;
 using P = PackedScene;
 using B = SceneBuffers;
 const ArrayBinding kArrays[] = {
-    {&B::spheres, bytesOf<&P::spheres>, copyOf<&P::spheres>, "sphere", kBindingSpheres,
-     kBindingSphereTexels, kVec4Texels},
-    {&B::planes, bytesOf<&P::planes>, copyOf<&P::planes>, "plane", kBindingPlanes,
-     kBindingPlaneTexels, kVec4Texels},
-    {&B::triangles, bytesOf<&P::triangles>, copyOf<&P::triangles>, "triangle", kBindingTriangles,
+    {&B::spheres, fromPacked<&P::spheres>(), "sphere", kBindingSpheres, kBindingSphereTexels,
+     kVec4Texels},
+    {&B::planes, fromPacked<&P::planes>(), "plane", kBindingPlanes, kBindingPlaneTexels,
+     kVec4Texels},
+    {&B::triangles, fromPacked<&P::triangles>(), "triangle", kBindingTriangles,
      kBindingTriangleTexels, kVec4Texels},
-    {&B::triangleShading, bytesOf<&P::triangleShading>, copyOf<&P::triangleShading>,
-     "triangle shading", kBindingTriangleShading, kBindingTriangleShadingTexels, kVec4Texels},
-    {&B::materials, bytesOf<&P::materials>, copyOf<&P::materials>, "material", kBindingMaterials,
+    {&B::triangleShading, fromPacked<&P::triangleShading>(), "triangle shading",
+     kBindingTriangleShading, kBindingTriangleShadingTexels, kVec4Texels},
+    {&B::materials, fromPacked<&P::materials>(), "material", kBindingMaterials,
      kBindingMaterialTexels, kVec4Texels},
-    {&B::lights, bytesOf<&P::lights>, copyOf<&P::lights>, "light", kBindingLights,
-     kBindingLightTexels, kVec4Texels},
-    {&B::cellStart, bytesOf<&P::cellStart>, copyOf<&P::cellStart>, "grid cell offset",
-     kBindingCellStart, kBindingCellStartTexels, kUintTexels},
-    {&B::cellPrimitives, bytesOf<&P::cellPrimitives>, copyOf<&P::cellPrimitives>,
-     "grid cell primitive", kBindingCellPrimitives, kBindingCellPrimitiveTexels, kUintTexels},
-    {&B::cellTriangles, cellTriangleBytes, writeCellTriangleBytes, "grid cell triangle",
-     kBindingCellTriangles, kBindingCellTriangleTexels, kUvec4Texels},
-    {&B::cellSpheres, bytesOf<&P::cellSpheres>, copyOf<&P::cellSpheres>, "grid cell sphere",
-     kBindingCellSpheres, kBindingCellSphereTexels, kVec4Texels},
-    {&B::textures, bytesOf<&P::textures>, copyOf<&P::textures>, "texture", kBindingTextures,
-     kBindingTextureTexels, kUvec4Texels},
-    {&B::texels, bytesOf<&P::texels>, copyOf<&P::texels>, "texture texel", kBindingTexels,
-     kBindingImageTexels, kVec4Texels},
-    {&B::gridEntries, bytesOf<&P::gridEntries>, copyOf<&P::gridEntries>, "grid voxel map",
-     kBindingGridEntries, kBindingGridEntryTexels, kUintTexels},
-    {&B::cellBoxes, bytesOf<&P::cellBoxes>, copyOf<&P::cellBoxes>, "grid cell box",
-     kBindingCellBoxes, kBindingCellBoxTexels, kUvec4Texels},
-    {&B::instances, bytesOf<&P::instances>, copyOf<&P::instances>, "instance", kBindingInstances,
+    {&B::lights, fromPacked<&P::lights>(), "light", kBindingLights, kBindingLightTexels,
+     kVec4Texels},
+    {&B::cellStart, fromPacked<&P::cellStart>(), "grid cell offset", kBindingCellStart,
+     kBindingCellStartTexels, kUintTexels},
+    {&B::cellPrimitives, fromPacked<&P::cellPrimitives>(), "grid cell primitive",
+     kBindingCellPrimitives, kBindingCellPrimitiveTexels, kUintTexels},
+    {&B::cellTriangles, kCellTriangles, "grid cell triangle", kBindingCellTriangles,
+     kBindingCellTriangleTexels, kUvec4Texels},
+    {&B::cellSpheres, fromPacked<&P::cellSpheres>(), "grid cell sphere", kBindingCellSpheres,
+     kBindingCellSphereTexels, kVec4Texels},
+    {&B::textures, fromPacked<&P::textures>(), "texture", kBindingTextures, kBindingTextureTexels,
+     kUvec4Texels},
+    {&B::texels, fromPacked<&P::texels>(), "texture texel", kBindingTexels, kBindingImageTexels,
+     kVec4Texels},
+    {&B::gridEntries, fromPacked<&P::gridEntries>(), "grid voxel map", kBindingGridEntries,
+     kBindingGridEntryTexels, kUintTexels},
+    {&B::cellBoxes, fromPacked<&P::cellBoxes>(), "grid cell box", kBindingCellBoxes,
+     kBindingCellBoxTexels, kUvec4Texels},
+    {&B::instances, fromPacked<&P::instances>(), "instance", kBindingInstances,
      kBindingInstanceTexels, kVec4Texels},
-    {&B::meshGrids, bytesOf<&P::meshGrids>, copyOf<&P::meshGrids>, "mesh grid", kBindingMeshGrids,
+    {&B::meshGrids, fromPacked<&P::meshGrids>(), "mesh grid", kBindingMeshGrids,
      kBindingMeshGridTexels, kUvec4Texels},
 };
 
@@ -174,7 +181,8 @@ SceneBuffers uploadScene(const vk::Context &context, vk::CommandRunner &runner,
         up.upload(&packed.header, sizeof(packed.header), false, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     for (const ArrayBinding &a : kArrays)
         b.*a.array = up.array(
-            a.bytes(packed), [&](std::byte *to) { a.write(packed, to); }, a.what, a.texels);
+            a.source.bytes(packed), [&](std::byte *to) { a.source.write(packed, to); }, a.what,
+            a.texels);
     return b;
 }
 
