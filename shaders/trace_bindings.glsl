@@ -35,8 +35,9 @@ const bool CELL_TRIANGLES = false;
 const bool CELL_SPHERES = false;
 #else
 layout(constant_id = kSpecAdaptiveGrid) const bool ADAPTIVE_GRID = false;
-// The grid's cells list triangles only, and cellTriangleArray holds each entry's triangle: a test
-// reads its vertices by the entry, with no primitive id (render/tracer_features.h).
+// The grid's cells list triangles only, and the cell triangle array holds each entry's triangle
+// (on an adaptive grid, in cell records): a test reads its vertices by the entry, with no
+// primitive id (render/tracer_features.h).
 layout(constant_id = kSpecCellTriangles) const bool CELL_TRIANGLES = false;
 // Likewise for a grid of spheres only: cellSphereArray holds each entry's centre and radius.
 layout(constant_id = kSpecCellSpheres) const bool CELL_SPHERES = false;
@@ -107,8 +108,10 @@ layout(std430, set = 0, binding = kBindingInstances) readonly buffer InstanceBuf
 layout(std430, set = 0, binding = kBindingMeshGrids) readonly buffer MeshGridBuffer {
     GpuMeshGrid meshGridArray[];
 };
+// Rows of 16 bytes: three per GpuCellTriangle, and on an adaptive grid the cell records'
+// box rows between them (gpu_types.h, cellRecordRow).
 layout(std430, set = 0, binding = kBindingCellTriangles) readonly buffer CellTriangleBuffer {
-    GpuCellTriangle cellTriangleArray[];
+    uvec4 cellTriangleRowArray[];
 };
 layout(std430, set = 0, binding = kBindingCellSpheres) readonly buffer CellSphereBuffer {
     vec4 cellSphereArray[];
@@ -151,12 +154,9 @@ float tileListStart(uvec2 entry) {
 uvec2 tileListEntry(uint i) {
     return texelFetch(tileListTexels, int(i)).xy;
 }
-// Row `row` of cell entry k's triangle (GpuCellTriangle: row 0 has the triangle's index in w).
-uvec4 cellTriangleRow(uint k, uint row) {
-    if (TEXEL_BUFFERS)
-        return texelFetch(cellTriangleTexels, int(3u * k + row));
-    return row == 0u ? cellTriangleArray[k].p0
-                     : (row == 1u ? cellTriangleArray[k].p1 : cellTriangleArray[k].p2);
+// Row i of the cell triangle array.
+uvec4 cellTriangleRowAt(uint i) {
+    return TEXEL_BUFFERS ? texelFetch(cellTriangleTexels, int(i)) : cellTriangleRowArray[i];
 }
 // Cell entry k's sphere: xyz centre, w radius.
 vec4 cellSphereAt(uint k) {

@@ -53,7 +53,7 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, float gridFrom, inout Hit hit,
             float tCellEnter = tEnter;
             bool progressed = !(RESUMABLE && resume.resuming); // a test since resuming
             while (walking) {
-                uint cell, first;
+                uint cell, first, end;
                 float tCellExit;
                 ivec3 entryVoxel = boxWalk.voxel; // the adaptive walker before entering the cell
                 float entryT = boxWalk.t;
@@ -61,13 +61,14 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, float gridFrom, inout Hit hit,
                     tCellEnter = entryT;
                     cell = enterBoxCell(boxWalk, origin, dir, invDir);
                     first = boxWalk.firstPrimitive;
+                    end = boxWalk.endPrimitive;
                     tCellExit = boxWalk.t;
                 } else {
                     tCellExit = min(min(walk.tNext.x, walk.tNext.y), walk.tNext.z);
                     cell = cellIndex(walk.cell);
                     first = cellStartAt(cell);
+                    end = cellStartAt(cell + 1u);
                 }
-                uint end = cellStartAt(cell + 1u);
                 uint cellFirst = first;
                 if (RESUMABLE) {
                     first = min(first + resume.skipTests, end); // tested in an earlier dispatch
@@ -95,7 +96,8 @@ bool TRACE_WALK_NAME(vec3 origin, vec3 dir, float gridFrom, inout Hit hit,
                 for (uint k = first; k < end; ++k) {
 #endif
                     if (CELL_TRIANGLES) { // no id: the entry is the triangle
-                        testCellTriangle(k, origin, dir, wray, hit);
+                        testCellTriangle(ADAPTIVE_GRID ? cellRecordTriangleRow(cell, k) : 3u * k,
+                                         origin, dir, wray, hit);
                         continue;
                     }
                     if (CELL_SPHERES) { // no id: the entry is the sphere

@@ -45,12 +45,13 @@ bool testTriangle(uint tri, vec3 origin, vec3 dir, WatertightRay wray, inout Hit
                           triangleVertex(tri, 2u), origin, dir, wray, hit);
 }
 
-// The triangle of cell entry k (CELL_TRIANGLES): three texels, no primitive id to fetch first.
-void testCellTriangle(uint k, vec3 origin, vec3 dir, WatertightRay wray, inout Hit hit) {
-    uvec4 row0 = cellTriangleRow(k, 0u);
+// The cell triangle (GpuCellTriangle) from row `row` of the cell triangle array (CELL_TRIANGLES):
+// three texels, no primitive id to fetch first.
+void testCellTriangle(uint row, vec3 origin, vec3 dir, WatertightRay wray, inout Hit hit) {
+    uvec4 row0 = cellTriangleRowAt(row);
     testTriangleAt(cellTriangleIndex(row0), uintBitsToFloat(row0.xyz),
-                   uintBitsToFloat(cellTriangleRow(k, 1u).xyz),
-                   uintBitsToFloat(cellTriangleRow(k, 2u).xyz), origin, dir, wray, hit);
+                   uintBitsToFloat(cellTriangleRowAt(row + 1u).xyz),
+                   uintBitsToFloat(cellTriangleRowAt(row + 2u).xyz), origin, dir, wray, hit);
 }
 
 // The sphere of cell entry k (CELL_SPHERES): one texel, no primitive id. The hit records the
@@ -218,7 +219,9 @@ uint adaptiveCellAt(ivec3 v) {
 struct BoxWalk {
     ivec3 voxel;
     ivec3 boxMin, boxMax;
-    uint firstPrimitive; // the current cell's first entry in the primitive lists
+    // The current cell's entries in the primitive lists; with cell records (CELL_TRIANGLES),
+    // 0 to its count, its triangles following its box row.
+    uint firstPrimitive, endPrimitive;
     float t; // the current cell's exit (before enterBoxCell: where the walk enters)
     int axis;
 };
@@ -234,11 +237,12 @@ BoxWalk startBoxWalk(vec3 origin, vec3 dir, float tEnter) {
 // Finds the cell holding the walker's voxel and where the ray leaves its box: through the
 // nearest face ahead. Returns the cell; w.t becomes its exit.
 uint enterBoxCell(inout BoxWalk w, vec3 origin, vec3 dir, vec3 invDir) {
-    uint cell = adaptiveCellAt(w.voxel);
-    uvec4 box = cellBoxAt(cell);
+    uint cell = adaptiveCellAt(w.voxel); // with cell records: the record's box row
+    uvec4 box = CELL_TRIANGLES ? cellTriangleRowAt(cell) : cellBoxAt(cell);
     w.boxMin = cellBoxMin(box);
     w.boxMax = cellBoxMax(box);
-    w.firstPrimitive = cellBoxFirstPrimitive(box);
+    w.firstPrimitive = CELL_TRIANGLES ? 0u : cellBoxFirstPrimitive(box);
+    w.endPrimitive = CELL_TRIANGLES ? cellRecordCount(box) : cellStartAt(cell + 1u);
     vec3 face = header.gridMin.xyz +
                 vec3(mix(w.boxMin, w.boxMax, greaterThan(dir, vec3(0.0)))) * header.voxelSize.xyz;
     vec3 tFace = mix((face - origin) * invDir, vec3(kInfinity), equal(dir, vec3(0.0)));

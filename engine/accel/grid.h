@@ -41,6 +41,10 @@ struct GridOptions {
 // Throws prism::Error with a message naming the bad text.
 GridOptions parseGridOption(std::string_view text);
 
+// The adaptive grid's entries and cells are indexed by 28 bits: an entry keeps 4 bits for the
+// split (and the tracer's cell records by their rows, render/scene_packing.h).
+constexpr uint32_t kMaxAdaptiveIndex = 1u << 28;
+
 // Either a regular grid or an adaptive one (entries not empty). The adaptive grid's cells have
 // boxes on a virtual grid of voxels, 2^shift per top cell and axis; its voxel map (entries)
 // finds the cell that holds a voxel, and a ray steps from the exit face of one cell's box to

@@ -11,9 +11,6 @@
 
 namespace prism {
 
-// Entries and cells are indexed by 28 bits: an entry keeps 4 bits for the split.
-constexpr uint32_t kMaxAdaptiveIndex = 1u << 28;
-
 // One top cell's subtree. Entries and cells are numbered from 0 within the fragment (entry 0 is
 // the top cell's own) and renumbered when the fragments are joined, in top-cell order: the grid
 // is the same whatever thread built what.

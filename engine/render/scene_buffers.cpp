@@ -116,11 +116,23 @@ template <auto member> constexpr ArraySource fromPacked() {
 
 // The largest array is not held by the packed scene but written here (PackedScene).
 constexpr ArraySource kCellTriangles{
-    [](const PackedScene &p) { return cellTriangleCount(p) * sizeof(gpu::GpuCellTriangle); },
+    [](const PackedScene &p) { return cellTriangleRows(p) * sizeof(glm::uvec4); },
     [](const PackedScene &p, std::byte *to) {
-        writeCellTriangles(p, std::span(reinterpret_cast<gpu::GpuCellTriangle *>(to),
-                                        size_t(cellTriangleCount(p))));
+        writeCellTriangles(
+            p, std::span(reinterpret_cast<glm::uvec4 *>(to), size_t(cellTriangleRows(p))));
     }};
+
+// A vector of the packed scene, copied, but none of it where `unread` is set: the tracer then
+// reads the same from elsewhere (the cell triangle array: PackedScene).
+template <auto member, bool PackedScene::*unread> constexpr ArraySource fromPackedUnless() {
+    return {[](const PackedScene &p) {
+                return p.*unread ? 0 : uint64_t(std::as_bytes(std::span(p.*member)).size());
+            },
+            [](const PackedScene &p, std::byte *to) {
+                if (!(p.*unread))
+                    fromPacked<member>().write(p, to);
+            }};
+}
 
 // Every scene array once: where it comes from, its name in errors, its bindings
 // (shared/trace_interface.h) and whether the tracer may read it as texels.
@@ -149,10 +161,10 @@ const ArrayBinding kArrays[] = {
      kBindingMaterialTexels, kVec4Texels},
     {&B::lights, fromPacked<&P::lights>(), "light", kBindingLights, kBindingLightTexels,
      kVec4Texels},
-    {&B::cellStart, fromPacked<&P::cellStart>(), "grid cell offset", kBindingCellStart,
-     kBindingCellStartTexels, kUintTexels},
-    {&B::cellPrimitives, fromPacked<&P::cellPrimitives>(), "grid cell primitive",
-     kBindingCellPrimitives, kBindingCellPrimitiveTexels, kUintTexels},
+    {&B::cellStart, fromPackedUnless<&P::cellStart, &P::cellRecords>(), "grid cell offset",
+     kBindingCellStart, kBindingCellStartTexels, kUintTexels},
+    {&B::cellPrimitives, fromPackedUnless<&P::cellPrimitives, &P::cellTriangles>(),
+     "grid cell primitive", kBindingCellPrimitives, kBindingCellPrimitiveTexels, kUintTexels},
     {&B::cellTriangles, kCellTriangles, "grid cell triangle", kBindingCellTriangles,
      kBindingCellTriangleTexels, kUvec4Texels},
     {&B::cellSpheres, fromPacked<&P::cellSpheres>(), "grid cell sphere", kBindingCellSpheres,
@@ -163,8 +175,8 @@ const ArrayBinding kArrays[] = {
      kVec4Texels},
     {&B::gridEntries, fromPacked<&P::gridEntries>(), "grid voxel map", kBindingGridEntries,
      kBindingGridEntryTexels, kUintTexels},
-    {&B::cellBoxes, fromPacked<&P::cellBoxes>(), "grid cell box", kBindingCellBoxes,
-     kBindingCellBoxTexels, kUvec4Texels},
+    {&B::cellBoxes, fromPackedUnless<&P::cellBoxes, &P::cellRecords>(), "grid cell box",
+     kBindingCellBoxes, kBindingCellBoxTexels, kUvec4Texels},
     {&B::instances, fromPacked<&P::instances>(), "instance", kBindingInstances,
      kBindingInstanceTexels, kVec4Texels},
     {&B::meshGrids, fromPacked<&P::meshGrids>(), "mesh grid", kBindingMeshGrids,

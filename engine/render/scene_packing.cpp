@@ -156,30 +156,75 @@ PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles, 
     packed.cellBoxes = grid.cellBoxes;
     for (size_t c = 0; c < packed.cellBoxes.size(); ++c)
         packed.cellBoxes[c].w = grid.cellStart[c]; // gpu::cellBoxFirstPrimitive
+    if (cellTriangles && grid.adaptive()) {
+        // The leaves name their cell's record (gpu::cellRecordRow), whose rows must fit the
+        // entries' 28 bits; chooseFeatures keeps grids that do not off cell triangles.
+        if (cellTriangleRows(grid, true) > kMaxAdaptiveIndex)
+            throw Error("adaptive grid's cell records need more than 2^28 rows");
+        packed.cellRecords = true;
+        for (uint32_t &entry : packed.gridEntries)
+            if (gpu::entrySplit(entry) == 0) {
+                uint32_t cell = gpu::entryTarget(entry);
+                entry = gpu::cellRecordRow(cell, grid.cellStart[cell]) << 4;
+            }
+    }
     h.voxelSize = glm::vec4(grid.voxelSize(), 0.0f);
     h.voxels = glm::uvec4(glm::uvec3(grid.voxelResolution()), grid.shift);
     return packed;
 }
 
-uint64_t cellTriangleCount(const PackedScene &packed) {
-    return packed.cellTriangles ? packed.cellPrimitives.size() : 0;
+uint64_t cellTriangleRows(const Grid &grid, bool cellTriangles) {
+    if (!cellTriangles)
+        return 0;
+    return 3 * uint64_t(grid.cellPrimitives.size()) + (grid.adaptive() ? grid.cellCount() : 0);
 }
 
-void writeCellTriangles(const PackedScene &packed, std::span<gpu::GpuCellTriangle> out) {
-    if (out.size() != cellTriangleCount(packed))
-        throw Error("cell triangle array of " + std::to_string(out.size()) + " entries, not " +
-                    std::to_string(cellTriangleCount(packed)));
-    // In parallel, each block its own entries: the 1M-triangle scene has 5.3M of them, and
-    // the device's fresh memory faults in page by page as it is first written.
+uint64_t cellTriangleRows(const PackedScene &packed) {
+    if (!packed.cellTriangles)
+        return 0;
+    return 3 * uint64_t(packed.cellPrimitives.size()) +
+           (packed.cellRecords ? packed.cellBoxes.size() : 0);
+}
+
+namespace {
+
+// Cell entry k's triangle as three rows from `rows` on (gpu::GpuCellTriangle).
+void writeTriangleRows(const PackedScene &packed, size_t k, glm::uvec4 *rows) {
+    uint32_t id = packed.cellPrimitives[k];
+    const gpu::GpuTriangle &t = packed.triangles.at(id);
+    rows[0] = glm::floatBitsToUint(glm::vec4(glm::vec3(t.v0), 0.0f));
+    rows[0].w = id;
+    rows[1] = glm::floatBitsToUint(glm::vec4(glm::vec3(t.v1), 0.0f));
+    rows[2] = glm::floatBitsToUint(glm::vec4(glm::vec3(t.v2), 0.0f));
+}
+
+} // namespace
+
+void writeCellTriangles(const PackedScene &packed, std::span<glm::uvec4> out) {
+    if (out.size() != cellTriangleRows(packed))
+        throw Error("cell triangle array of " + std::to_string(out.size()) + " rows, not " +
+                    std::to_string(cellTriangleRows(packed)));
+    // In parallel, each block its own rows: the 1M-triangle scene has 5.3M entries, and the
+    // device's fresh memory faults in page by page as it is first written.
     constexpr size_t kBlock = 1 << 16;
-    parallelFor((out.size() + kBlock - 1) / kBlock, [&](size_t block) {
-        for (size_t k = block * kBlock; k < std::min(out.size(), (block + 1) * kBlock); ++k) {
-            uint32_t id = packed.cellPrimitives[k];
-            const gpu::GpuTriangle &t = packed.triangles.at(id);
-            out[k] = {glm::floatBitsToUint(glm::vec4(glm::vec3(t.v0), 0.0f)),
-                      glm::floatBitsToUint(glm::vec4(glm::vec3(t.v1), 0.0f)),
-                      glm::floatBitsToUint(glm::vec4(glm::vec3(t.v2), 0.0f))};
-            out[k].p0.w = id;
+    if (!packed.cellRecords) {
+        size_t entries = packed.cellPrimitives.size();
+        parallelFor((entries + kBlock - 1) / kBlock, [&](size_t block) {
+            for (size_t k = block * kBlock; k < std::min(entries, (block + 1) * kBlock); ++k)
+                writeTriangleRows(packed, k, &out[3 * k]);
+        });
+        return;
+    }
+    size_t cells = packed.cellBoxes.size();
+    parallelFor((cells + kBlock - 1) / kBlock, [&](size_t block) {
+        for (size_t c = block * kBlock; c < std::min(cells, (block + 1) * kBlock); ++c) {
+            uint32_t first = packed.cellStart[c], end = packed.cellStart[c + 1];
+            size_t row = gpu::cellRecordRow(uint32_t(c), first);
+            out[row] = packed.cellBoxes[c];
+            out[row].w = end - first; // gpu::cellRecordCount
+            for (uint32_t k = first; k < end; ++k)
+                writeTriangleRows(packed, k,
+                                  &out[gpu::cellRecordTriangleRow(uint32_t(row), k - first)]);
         }
     });
 }

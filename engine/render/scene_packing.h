@@ -24,12 +24,19 @@ struct PackedScene {
     std::vector<uint32_t> cellStart;
     std::vector<uint32_t> cellPrimitives;
     // With cellTriangles: each cell entry's triangle (gpu::GpuCellTriangle, 48 bytes), in list
-    // order. Not held here: writeCellTriangles writes it straight into the device's array at
-    // upload, as it is the largest array by far (256 of the 390 MB of 1M triangles).
+    // order; on an adaptive grid, each cell's record: its box row, then its triangles
+    // (cellRecords; gpu::cellRecordRow). Not held here: writeCellTriangles writes it straight
+    // into the device's array at upload, as it is the largest array by far (256 of the 390 MB
+    // of 1M triangles).
+    // The tracer then reads no primitive ids (cellPrimitives), and with cellRecords neither
+    // cellStart nor cellBoxes: none of these is uploaded (render/scene_buffers.cpp).
     bool cellTriangles = false;
+    bool cellRecords = false;
     std::vector<glm::vec4> cellSpheres; // with cellSpheres only: each entry's centre and radius
-    std::vector<uint32_t> gridEntries;  // adaptive grid only
-    std::vector<glm::uvec4> cellBoxes;  // adaptive grid only
+    // Adaptive grid only. With cellRecords the leaves name cell records, not cells, and the
+    // boxes are written into the records.
+    std::vector<uint32_t> gridEntries;
+    std::vector<glm::uvec4> cellBoxes;
     std::vector<gpu::GpuInstance> instances;
     std::vector<gpu::GpuMeshGrid> meshGrids; // one per prototype
 };
@@ -43,10 +50,13 @@ struct PackedScene {
 PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles = false,
                       bool cellSpheres = false);
 
-// Entries of the cell triangle array: one per cell entry with cellTriangles, else none.
-uint64_t cellTriangleCount(const PackedScene &packed);
-// Writes the cell triangle array, cellTriangleCount(packed) entries, into `out`, from
-// packed.triangles and packed.cellPrimitives. Throws prism::Error for any other size.
-void writeCellTriangles(const PackedScene &packed, std::span<gpu::GpuCellTriangle> out);
+// Rows (16 bytes) of the cell triangle array: three per cell entry with cellTriangles, and one
+// per cell more with cellRecords; else none.
+uint64_t cellTriangleRows(const Grid &grid, bool cellTriangles);
+uint64_t cellTriangleRows(const PackedScene &packed);
+// Writes the cell triangle array, cellTriangleRows(packed) rows, into `out`, from
+// packed.triangles and packed.cellPrimitives (and packed.cellBoxes for the records). Throws
+// prism::Error for any other size.
+void writeCellTriangles(const PackedScene &packed, std::span<glm::uvec4> out);
 
 } // namespace prism

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "render/scene_packing.h"
 #include "scene/primitive_ids.h"
 #include "shared/trace_interface.h"
 
@@ -65,8 +66,11 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     uint32_t finiteKinds = f.kinds & ~(1u << gpu::kKindPlane);
     uint64_t entries = grid.cellPrimitives.size();
     bool cells = options.cellPrimitives && f.texelBuffers;
-    f.cellTriangles =
-        cells && finiteKinds == (1u << gpu::kKindTriangle) && 3 * entries <= maxTexelElements;
+    // On an adaptive grid the rows hold the cell records, which the voxel map's leaves name by
+    // 28 bits (render/scene_packing.h).
+    uint64_t rows = cellTriangleRows(grid, true);
+    f.cellTriangles = cells && finiteKinds == (1u << gpu::kKindTriangle) &&
+                      rows <= maxTexelElements && (!grid.adaptive() || rows <= kMaxAdaptiveIndex);
     f.cellSpheres = cells && finiteKinds == (1u << gpu::kKindSphere) && entries <= maxTexelElements;
     return f;
 }

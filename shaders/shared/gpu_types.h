@@ -46,7 +46,8 @@ PRISM_INLINE ivec3 cellBoxMax(PRISM_IN(uvec4) box) {
     return ivec3(int(box.y >> 16u), int(box.z & 0xFFFFu), int(box.z >> 16u));
 }
 // On the GPU a box's w is the cell's first entry in the primitive lists (its cellStart), so a
-// step of the walk reads one offset less (render/scene_packing.cpp writes it).
+// step of the walk reads one offset less (render/scene_packing.cpp writes it). In a cell record
+// (below) it is the cell's count instead.
 PRISM_INLINE uint cellBoxFirstPrimitive(PRISM_IN(uvec4) box) {
     return box.w;
 }
@@ -94,6 +95,25 @@ struct GpuCellTriangle {
 };
 PRISM_INLINE uint cellTriangleIndex(PRISM_IN(uvec4) p0) {
     return p0.w;
+}
+// The adaptive grid's cell records (CELL_TRIANGLES on an adaptive grid). The cell triangle array
+// is then read as rows of 16 bytes: each cell, in cell order, has its box row (cellBoxMin/Max;
+// w: how many triangles it lists), then its triangles (three rows each, as GpuCellTriangle), and
+// the voxel map's leaves name the box row. A walk's step reads its cell's box and triangles from
+// one place, most often the same or the next cache line, instead of from two arrays one after
+// the other: on 1M triangles, whose arrays are far larger than the caches, that is a tenth of
+// the frame (docs/benchmarks.md).
+PRISM_INLINE uint cellRecordCount(PRISM_IN(uvec4) boxRow) {
+    return boxRow.w;
+}
+// Row 0 of the k-th triangle of the record whose box row is `record`.
+PRISM_INLINE uint cellRecordTriangleRow(uint record, uint k) {
+    return record + 1u + 3u * k;
+}
+// The box row of cell `cell` whose list starts at entry `cellStart`: every cell before it has a
+// box row, and three rows per entry of theirs.
+PRISM_INLINE uint cellRecordRow(uint cell, uint cellStart) {
+    return cell + 3u * cellStart;
 }
 
 // A placement of a mesh prototype (scene.h, Instance): the similarity both ways, as the rows of

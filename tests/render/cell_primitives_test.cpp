@@ -2,6 +2,7 @@
 // triangle (sphere) is stored in list order so that a test needs no primitive id. The packed
 // entries must be the listed primitives, exactly; the variants must be chosen only where they
 // apply and fit; and they must change no pixel, AOV or ray count on either grid, resumed or not.
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <string>
@@ -50,37 +51,97 @@ Scene sphereScene() {
     return scene;
 }
 
+// Expects rows[row..row + 2] to be cell entry k's triangle (gpu::GpuCellTriangle).
+void expectCellTriangle(const Scene &scene, const Grid &grid, const PackedScene &packed,
+                        const std::vector<glm::uvec4> &rows, size_t row, size_t k) {
+    ASSERT_LE(row + 3, rows.size());
+    uint32_t id = grid.cellPrimitives[k];
+    ASSERT_EQ(gpu::cellTriangleIndex(rows[row]), id);
+    const gpu::GpuTriangle &t = packed.triangles[id];
+    for (int axis = 0; axis < 3; ++axis) {
+        EXPECT_EQ(rows[row][axis], std::bit_cast<uint32_t>(t.v0[axis]));
+        EXPECT_EQ(rows[row + 1][axis], std::bit_cast<uint32_t>(t.v1[axis]));
+        EXPECT_EQ(rows[row + 2][axis], std::bit_cast<uint32_t>(t.v2[axis]));
+        // And the scene's own vertex, as a float.
+        EXPECT_EQ(rows[row + 1][axis],
+                  std::bit_cast<uint32_t>(float(scene.triangles[id].p[1][axis])));
+    }
+    EXPECT_EQ(rows[row + 1].w, 0u);
+    EXPECT_EQ(rows[row + 2].w, 0u);
+}
+
 TEST(CellTriangles, AreTheListedTrianglesInListOrder) {
     Scene scene = triangleScene();
-    for (const GridOptions &options : {GridOptions{}, parseGridOption("6")}) {
-        Grid grid = buildGrid(scene, options);
-        PackedScene packed = packScene(scene, grid, true);
-        std::vector<gpu::GpuCellTriangle> cells(cellTriangleCount(packed));
-        writeCellTriangles(packed, cells);
-        ASSERT_EQ(cells.size(), grid.cellPrimitives.size());
-        ASSERT_GT(cells.size(), scene.triangles.size()) << "some listed twice";
-        EXPECT_THROW(writeCellTriangles(packed, std::span(cells).first(cells.size() - 1)), Error);
-        for (size_t k = 0; k < cells.size(); ++k) {
-            const gpu::GpuCellTriangle &c = cells[k];
-            uint32_t id = grid.cellPrimitives[k];
-            ASSERT_EQ(gpu::cellTriangleIndex(c.p0), id);
-            const gpu::GpuTriangle &t = packed.triangles[id];
-            for (int axis = 0; axis < 3; ++axis) {
-                EXPECT_EQ(c.p0[axis], std::bit_cast<uint32_t>(t.v0[axis]));
-                EXPECT_EQ(c.p1[axis], std::bit_cast<uint32_t>(t.v1[axis]));
-                EXPECT_EQ(c.p2[axis], std::bit_cast<uint32_t>(t.v2[axis]));
-                // And the scene's own vertex, as a float.
-                EXPECT_EQ(c.p1[axis],
-                          std::bit_cast<uint32_t>(float(scene.triangles[id].p[1][axis])));
-            }
-            EXPECT_EQ(c.p1.w, 0u);
-            EXPECT_EQ(c.p2.w, 0u);
-        }
-        EXPECT_EQ(cellTriangleCount(packScene(scene, grid)), 0u);
-    }
+    Grid grid = buildGrid(scene, parseGridOption("6"));
+    PackedScene packed = packScene(scene, grid, true);
+    EXPECT_FALSE(packed.cellRecords);
+    std::vector<glm::uvec4> rows(cellTriangleRows(packed));
+    writeCellTriangles(packed, rows);
+    ASSERT_EQ(rows.size(), 3 * grid.cellPrimitives.size());
+    ASSERT_EQ(cellTriangleRows(grid, true), rows.size());
+    ASSERT_GT(grid.cellPrimitives.size(), scene.triangles.size()) << "some listed twice";
+    EXPECT_THROW(writeCellTriangles(packed, std::span(rows).first(rows.size() - 1)), Error);
+    for (size_t k = 0; k < grid.cellPrimitives.size(); ++k)
+        expectCellTriangle(scene, grid, packed, rows, 3 * k, k);
+    EXPECT_EQ(cellTriangleRows(packScene(scene, grid)), 0u);
+    EXPECT_EQ(cellTriangleRows(grid, false), 0u);
     Scene withSphere = scene;
     withSphere.spheres.push_back(Sphere{{0.0, 3.0, 0.0}, 0.5f, 0});
     EXPECT_THROW(packScene(withSphere, buildGrid(withSphere), true), Error);
+}
+
+// On an adaptive grid: every cell's record (its box row, then its triangles), at the row that
+// the voxel map's leaf for the cell names, the rows filling the array exactly once.
+TEST(CellTriangles, AdaptiveGridCellsAreRecordsTheVoxelMapNames) {
+    Scene scene = triangleScene();
+    Grid grid = buildGrid(scene, parseGridOption("adaptive"));
+    ASSERT_TRUE(grid.adaptive());
+    PackedScene packed = packScene(scene, grid, true);
+    ASSERT_TRUE(packed.cellRecords);
+    EXPECT_FALSE(packScene(scene, grid).cellRecords);
+    std::vector<glm::uvec4> rows(cellTriangleRows(packed));
+    ASSERT_EQ(rows.size(), grid.cellCount() + 3 * grid.cellPrimitives.size());
+    ASSERT_EQ(cellTriangleRows(grid, true), rows.size());
+    writeCellTriangles(packed, rows);
+    EXPECT_THROW(writeCellTriangles(packed, std::span(rows).first(rows.size() - 1)), Error);
+
+    // Each leaf names the record of the cell it named in the grid; splits are unchanged.
+    ASSERT_EQ(packed.gridEntries.size(), grid.entries.size());
+    std::vector<uint32_t> recordOf(grid.cellCount(), ~0u);
+    for (size_t i = 0; i < grid.entries.size(); ++i) {
+        uint32_t entry = grid.entries[i], packedEntry = packed.gridEntries[i];
+        ASSERT_EQ(gpu::entrySplit(packedEntry), gpu::entrySplit(entry));
+        if (gpu::entrySplit(entry) != 0) {
+            EXPECT_EQ(packedEntry, entry);
+            continue;
+        }
+        uint32_t cell = gpu::entryTarget(entry);
+        ASSERT_LT(cell, recordOf.size());
+        EXPECT_TRUE(recordOf[cell] == ~0u || recordOf[cell] == gpu::entryTarget(packedEntry))
+            << "one record a cell";
+        recordOf[cell] = gpu::entryTarget(packedEntry);
+    }
+    // The records, in cell order, cover the rows exactly.
+    size_t next = 0;
+    for (uint32_t c = 0; c < grid.cellCount(); ++c) {
+        SCOPED_TRACE("cell " + std::to_string(c));
+        uint32_t first = grid.cellStart[c], count = grid.cellStart[c + 1] - first;
+        if (recordOf[c] != ~0u) {
+            EXPECT_EQ(recordOf[c], next);
+        }
+        ASSERT_EQ(gpu::cellRecordRow(c, first), next);
+        const glm::uvec4 &box = rows[next];
+        EXPECT_EQ(gpu::cellBoxMin(box), gpu::cellBoxMin(grid.cellBoxes[c]));
+        EXPECT_EQ(gpu::cellBoxMax(box), gpu::cellBoxMax(grid.cellBoxes[c]));
+        ASSERT_EQ(gpu::cellRecordCount(box), count);
+        for (uint32_t k = 0; k < count; ++k) {
+            ASSERT_EQ(gpu::cellRecordTriangleRow(uint32_t(next), k), next + 1 + 3 * k);
+            expectCellTriangle(scene, grid, packed, rows, next + 1 + 3 * k, first + k);
+        }
+        next += 1 + 3 * size_t(count);
+    }
+    EXPECT_EQ(next, rows.size());
+    EXPECT_EQ(std::count(recordOf.begin(), recordOf.end(), ~0u), 0) << "every cell has a leaf";
 }
 
 TEST(CellTriangles, ChosenOnlyWhereTheCellsListTrianglesAndTheyFit) {
@@ -91,6 +152,11 @@ TEST(CellTriangles, ChosenOnlyWhereTheCellsListTrianglesAndTheyFit) {
     EXPECT_TRUE(chooseFeatures(scene, grid, options).cellTriangles);
     EXPECT_TRUE(chooseFeatures(scene, grid, options, texels).cellTriangles);
     EXPECT_FALSE(chooseFeatures(scene, grid, options, texels - 1).cellTriangles) << "too big";
+    // An adaptive grid's records have a box row each cell too.
+    Grid adaptive = buildGrid(scene, parseGridOption("adaptive"));
+    uint64_t records = adaptive.cellCount() + 3 * adaptive.cellPrimitives.size();
+    EXPECT_TRUE(chooseFeatures(scene, adaptive, options, records).cellTriangles);
+    EXPECT_FALSE(chooseFeatures(scene, adaptive, options, records - 1).cellTriangles) << "too big";
     EXPECT_FALSE(chooseFeatures(scene, grid, options).backgroundOnly().cellTriangles);
     TracerOptions off = options;
     off.cellPrimitives = false;
