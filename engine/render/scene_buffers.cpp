@@ -125,9 +125,7 @@ constexpr ArraySource kCellTriangles{
 // A vector of the packed scene, copied, but none of it where `unread` is set: the tracer then
 // reads the same from elsewhere (the cell triangle array: PackedScene).
 template <auto member, bool PackedScene::*unread> constexpr ArraySource fromPackedUnless() {
-    return {[](const PackedScene &p) {
-                return p.*unread ? 0 : uint64_t(std::as_bytes(std::span(p.*member)).size());
-            },
+    return {[](const PackedScene &p) { return p.*unread ? 0 : fromPacked<member>().bytes(p); },
             [](const PackedScene &p, std::byte *to) {
                 if (!(p.*unread))
                     fromPacked<member>().write(p, to);

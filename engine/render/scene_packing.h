@@ -26,7 +26,7 @@ struct PackedScene {
     // With cellTriangles: each cell entry's triangle (gpu::GpuCellTriangle, 48 bytes), in list
     // order; on an adaptive grid, each cell's record: its box row, then its triangles
     // (cellRecords; gpu::cellRecordRow). Not held here: writeCellTriangles writes it straight
-    // into the device's array at upload, as it is the largest array by far (256 of the 390 MB
+    // into the device's array at upload, as it is the largest array by far (289 of the 360 MB
     // of 1M triangles).
     // The tracer then reads no primitive ids (cellPrimitives), and with cellRecords neither
     // cellStart nor cellBoxes: none of these is uploaded (render/scene_buffers.cpp).
