@@ -5,6 +5,7 @@
 #include <span>
 
 #include "core/error.h"
+#include "core/huge_pages.h"
 #include "shared/trace_interface.h"
 
 namespace prism {
@@ -71,6 +72,7 @@ private:
     // The array's bytes, then zeros to the buffer's end.
     template <typename Write>
     static void fill(void *to, Write &write, uint64_t bytes, VkDeviceSize size) {
+        adviseHugePages(to, size); // lavapipe's memory is the host's: fault it in 2 MiB pages
         if (bytes)
             write(static_cast<std::byte *>(to));
         std::memset(static_cast<std::byte *>(to) + bytes, 0, size - bytes);

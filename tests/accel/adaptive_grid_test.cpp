@@ -230,27 +230,18 @@ TEST(AdaptiveGrid, ExpandedCellsCrossEmptySpaceInFewSteps) {
     EXPECT_LT(visited, mapCells);
 }
 
-void expectSameArrays(const Grid &a, const Grid &b) {
-    EXPECT_EQ(a.entries, b.entries);
-    EXPECT_EQ(a.cellBoxes, b.cellBoxes);
-    EXPECT_EQ(a.cellStart, b.cellStart);
-    EXPECT_EQ(a.cellPrimitives, b.cellPrimitives);
-    EXPECT_EQ(a.depth, b.depth);
-    EXPECT_EQ(a.maxPerCell, b.maxPerCell);
-}
-
 // The same input gives the same arrays on every run and at every thread count: top cells,
 // fragments and expansion blocks go to whichever thread is free.
 TEST(AdaptiveGrid, BuildIsDeterministic) {
     Scene scene = test::clusterInARoom(45, 800, 80);
     Grid a = adaptive(scene), b = adaptive(scene);
-    expectSameArrays(a, b);
+    test::expectSameGrid(a, b);
     Grid twoLevel = buildGrid(scene, parseGridOption("two-level"));
     for (unsigned threads : {1u, 2u, 3u, 8u}) {
         ParallelThreads limit(threads);
         SCOPED_TRACE(threads);
-        expectSameArrays(a, adaptive(scene));
-        expectSameArrays(twoLevel, buildGrid(scene, parseGridOption("two-level")));
+        test::expectSameGrid(a, adaptive(scene));
+        test::expectSameGrid(twoLevel, buildGrid(scene, parseGridOption("two-level")));
     }
 }
 

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "accel/grid.h"
 #include "accel/overlap_tests.h"
 #include "scene/primitive_ids.h"
 #include "scene/scene.h"
@@ -115,6 +116,25 @@ inline void expectCellListsExactly(const Scene &scene, const glm::dvec3 &lo, con
                 << "primitive " << id << " listed far from its cell";
         }
     }
+}
+
+// Every array and field of two grids, their prototypes' grids included.
+inline void expectSameGrid(const Grid &a, const Grid &b) {
+    EXPECT_EQ(a.boundsMin, b.boundsMin);
+    EXPECT_EQ(a.boundsMax, b.boundsMax);
+    EXPECT_EQ(a.resolution, b.resolution);
+    EXPECT_EQ(a.cellSize, b.cellSize);
+    EXPECT_EQ(a.cellStart, b.cellStart);
+    EXPECT_EQ(a.cellPrimitives, b.cellPrimitives);
+    EXPECT_EQ(a.shift, b.shift);
+    EXPECT_EQ(a.entries, b.entries);
+    EXPECT_EQ(a.cellBoxes, b.cellBoxes);
+    EXPECT_EQ(a.depth, b.depth);
+    EXPECT_EQ(a.maxPerCell, b.maxPerCell);
+    EXPECT_EQ(a.choice, b.choice);
+    ASSERT_EQ(a.meshGrids.size(), b.meshGrids.size());
+    for (size_t m = 0; m < a.meshGrids.size(); ++m)
+        expectSameGrid(a.meshGrids[m], b.meshGrids[m]);
 }
 
 } // namespace prism::test

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cache/disk_cache.h"
 #include "core/error.h"
 #include "size_option.h"
 #include "tool_environment.h"
@@ -88,6 +89,13 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
                  "Enable Vulkan validation layers (also PRISM_VALIDATION=1)");
     app.add_option("--device", options.deviceFilter,
                    "Use the first Vulkan device whose name contains this text");
+    std::string cacheDir;
+    app.add_option("--cache", cacheDir,
+                   "Keep built grids in this directory and reuse them (default: $PRISM_CACHE_DIR, "
+                   "else $XDG_CACHE_HOME/prism, else ~/.cache/prism)");
+    app.add_flag("--no-cache", options.noCache,
+                 "Build the grid without reading or writing the "
+                 "cache");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError &e) {
@@ -111,6 +119,10 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
         throw Error("--show-tiles shows the Vulkan tracer's tiles; the cpu backend has none");
     if ((options.aovDepth || options.aovNormal) && ext != ".exr")
         throw Error("--aov needs an .exr output (PNG holds colour only)");
+    if (options.noCache && !cacheDir.empty())
+        throw Error("--cache and --no-cache cannot be given together");
+    options.cacheDir =
+        cacheDir.empty() ? DiskCache::defaultDirectory() : std::filesystem::path(cacheDir);
     options.validation = validationWanted(options.validation);
     options.commandLine = commandLineText(argc, argv);
     return true;

@@ -26,6 +26,9 @@ struct RenderOptions {
     bool quiet = false;
     bool validation = false;
     std::string deviceFilter;
+    // The grid cache (accel/grid_cache.h): this directory, or none with --no-cache.
+    std::filesystem::path cacheDir;
+    bool noCache = false;
     std::string commandLine; // as typed, for the image's metadata
 };
 

@@ -3,11 +3,17 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <future>
+#include <memory>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "accel/grid_cache.h"
 #include "accel/walk_counts.h"
+#include "cache/disk_cache.h"
 #include "core/error.h"
 #include "core/median.h"
 #include "core/timer.h"
@@ -27,11 +33,12 @@ namespace {
 // Where a Vulkan render's wall-clock time goes before and after the frames (--stats
 // "phases_ms"), so start-up can be judged: docs/benchmarks.md has cold and warm figures.
 struct VulkanPhases {
-    double contextMs = 0.0;  // instance, device, queues (and validation layers if asked)
-    double tracerMs = 0.0;   // scene arrays uploaded, pipeline created for the scene's variant
-    double compileMs = 0.0;  // the untimed 8x8 dispatch: lavapipe compiles the shader there
-    double framesMs = 0.0;   // every frame on the host's clock, waits included
-    double readbackMs = 0.0; // accumulation (and AOVs) copied back and divided
+    double contextMs = 0.0;     // waiting for the instance, device and queues (made meanwhile)
+    double contextMadeMs = 0.0; // making them, on their own thread while the scene loads
+    double tracerMs = 0.0;      // scene arrays uploaded, pipeline created for the scene's variant
+    double compileMs = 0.0;     // the untimed 8x8 dispatch: lavapipe compiles the shader there
+    double framesMs = 0.0;      // every frame on the host's clock, waits included
+    double readbackMs = 0.0;    // accumulation (and AOVs) copied back and divided
 };
 
 // What one backend produced: the image and the per-frame timings.
@@ -47,14 +54,43 @@ struct RenderOutcome {
     VulkanPhases phases;
 };
 
-RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const Grid &grid) {
-    vk::ContextOptions contextOptions;
-    contextOptions.validation = o.validation;
-    contextOptions.deviceNameFilter = o.deviceFilter;
+// The Vulkan instance and device, made on a thread of their own while the scene loads and its
+// grid builds (they need nothing of the scene): 120-180 ms of lavapipe's start-up (loading
+// the driver and LLVM) that no longer adds to the wait (issue 31).
+class ContextInBackground {
+public:
+    explicit ContextInBackground(const RenderOptions &o) {
+        vk::ContextOptions options;
+        options.validation = o.validation;
+        options.deviceNameFilter = o.deviceFilter;
+        made_ = std::async(std::launch::async, [options] {
+            Timer timer;
+            auto context = std::make_unique<vk::Context>(options);
+            return std::pair{std::move(context), timer.elapsedMs()};
+        });
+    }
+    // The context (rethrowing what its creation threw), and how long the caller waited for it.
+    vk::Context &get(double &waitedMs, double &madeMs) {
+        Timer wait;
+        if (!context_) {
+            auto [context, ms] = made_.get();
+            context_ = std::move(context);
+            madeMs = ms;
+        }
+        waitedMs = wait.elapsedMs();
+        return *context_;
+    }
+
+private:
+    std::future<std::pair<std::unique_ptr<vk::Context>, double>> made_;
+    std::unique_ptr<vk::Context> context_;
+};
+
+RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const Grid &grid,
+                             ContextInBackground &background) {
     RenderOutcome out;
     Timer phase;
-    vk::Context context(contextOptions);
-    out.phases.contextMs = phase.elapsedMs();
+    vk::Context &context = background.get(out.phases.contextMs, out.phases.contextMadeMs);
 
     TracerOptions tracerOptions;
     tracerOptions.maxDepth = o.maxDepth;
@@ -144,6 +180,9 @@ RenderOutcome renderOnCpu(const RenderOptions &o, const Scene &scene) {
 
 void runRender(const RenderOptions &o) {
     Timer process; // from here (the command line is parsed) to the image on disk
+    std::optional<ContextInBackground> context;
+    if (o.backend == Backend::Vulkan)
+        context.emplace(o);
     Timer loadTimer;
     Scene scene = loadScene(o.scenePath);
     centerOnCamera(scene); // both backends trace the same camera-relative scene
@@ -153,11 +192,16 @@ void runRender(const RenderOptions &o) {
             std::fprintf(stderr, "%s\n", warning.c_str());
 
     Timer buildTimer;
-    Grid grid = buildGrid(scene, o.grid);
+    std::optional<DiskCache> cache;
+    if (!o.noCache && !o.cacheDir.empty())
+        cache.emplace(DiskCacheOptions{o.cacheDir});
+    GridCacheOutcome cacheOutcome;
+    Grid grid =
+        buildGridCached(scene, o.grid, GridCachePolicy{cache ? &*cache : nullptr}, &cacheOutcome);
     double buildMs = buildTimer.elapsedMs();
 
-    RenderOutcome out =
-        o.backend == Backend::Cpu ? renderOnCpu(o, scene) : renderOnVulkan(o, scene, grid);
+    RenderOutcome out = o.backend == Backend::Cpu ? renderOnCpu(o, scene)
+                                                  : renderOnVulkan(o, scene, grid, *context);
     double bestMs = *std::min_element(out.frameMs.begin(), out.frameMs.end());
     double medianMs = median(out.frameMs);
     double mraysPerSecond = double(out.rays.total()) / (bestMs * 1e3);
@@ -226,7 +270,12 @@ void runRender(const RenderOptions &o) {
               {"shadow", out.rays.shadow},
               {"secondary", out.rays.secondary}}},
             {"mrays_per_s", mraysPerSecond},
-            {"resume_dispatches", out.resumeDispatches}};
+            {"resume_dispatches", out.resumeDispatches},
+            {"grid_cache",
+             {{"state", cacheOutcome.state},
+              {"key_ms", cacheOutcome.keyMs},
+              {"read_ms", cacheOutcome.readMs},
+              {"store_ms", cacheOutcome.storeMs}}}};
         if (o.backend == Backend::Vulkan) // which tracer ran each 8x8 tile (render/traced_tiles.h)
             stats["tiles"] = {{"full", out.tiles[0]},
                               {"planes_only", out.tiles[1]},
@@ -253,6 +302,7 @@ void runRender(const RenderOptions &o) {
         nlohmann::json phases = {{"load", loadMs}, {"build", buildMs}};
         if (o.backend == Backend::Vulkan)
             phases.update({{"context", out.phases.contextMs},
+                           {"context_made", out.phases.contextMadeMs},
                            {"tracer", out.phases.tracerMs},
                            {"compile", out.phases.compileMs},
                            {"frames", out.phases.framesMs},

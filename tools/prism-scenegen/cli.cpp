@@ -17,9 +17,9 @@ namespace prism::scenegen {
 namespace {
 
 // A path as the scene format takes it: bare, or quoted when it holds spaces.
-std::string scenePathToken(const std::string &path) {
+std::string scenePathToken(const std::string &path, const char *what) {
     if (path.empty() || path.find_first_of("\"#\r\n") != std::string::npos)
-        throw Error("--bunny path '" + path + "' cannot be written into a scene file");
+        throw Error(std::string(what) + " '" + path + "' cannot be written into a scene file");
     return path.find_first_of(" \t") == std::string::npos ? path : "\"" + path + "\"";
 }
 
@@ -102,6 +102,16 @@ int runScenegen(int argc, char **argv) {
         ->default_val(tori.shards);
     addOutput(toriCmd);
 
+    SphereMeshOptions sphereMesh;
+    CLI::App *sphereMeshCmd = app.add_subcommand(
+        "sphere-mesh", "One dense closed mesh (a finely tessellated sphere) over a floor, "
+                       "written as OBJ beside the scene (FILE.obj for FILE.scene)");
+    sphereMeshCmd->add_option("--triangles", sphereMesh.triangles, "Triangles, about (12 .. 2e7)")
+        ->default_val(sphereMesh.triangles);
+    sphereMeshCmd->add_flag("--smooth", sphereMesh.smooth,
+                            "Smooth-shade the mesh (vertex normals made when the scene loads)");
+    addOutput(sphereMeshCmd);
+
     CLI::App *mixedCmd = app.add_subcommand(
         "mixed", "Planes, spheres and triangle solids, 621 primitives (the original's scene)");
     addOutput(mixedCmd);
@@ -129,10 +139,17 @@ int runScenegen(int argc, char **argv) {
         text = latticeScene(lattice, latticeCommand(lattice));
     else if (toriCmd->parsed())
         text = toriScene(tori, toriCommand(tori));
-    else if (mixedCmd->parsed())
+    else if (sphereMeshCmd->parsed()) {
+        // The OBJ first, so that a scene never names a mesh that is not there.
+        std::filesystem::path objPath = std::filesystem::path(output).replace_extension(".obj");
+        std::string command = sphereMeshCommand(sphereMesh);
+        text = sphereMeshScene(
+            sphereMesh, scenePathToken(objPath.filename().string(), "mesh file name"), command);
+        writeFileAtomically(objPath, sphereMeshObj(sphereMesh, command));
+    } else if (mixedCmd->parsed())
         text = mixedScene("prism-scenegen mixed");
     else {
-        std::string token = scenePathToken(bunnyPath);
+        std::string token = scenePathToken(bunnyPath, "--bunny path");
         std::string command = "prism-scenegen objects";
         if (bunnyPath != "../models/bunny/bunny_lowres.obj")
             command += " --bunny '" + bunnyPath + "'";

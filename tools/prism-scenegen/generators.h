@@ -40,6 +40,18 @@ struct ToriOptions {
 std::string toriScene(const ToriOptions &options, const std::string &command);
 std::string toriCommand(const ToriOptions &options);
 
+// One closed mesh, a sphere of about `triangles` triangles (a subdivided cube pushed onto the
+// sphere), over a floor: the dense single surface of the first-image ladder (issue 31). The
+// mesh is an OBJ file (sphereMeshObj) that the scene names as `objName`, beside it.
+struct SphereMeshOptions {
+    uint32_t triangles = 100000;
+    bool smooth = false; // `smooth` on the mesh line (vertex normals made at load)
+};
+std::string sphereMeshScene(const SphereMeshOptions &options, const std::string &objName,
+                            const std::string &command);
+std::string sphereMeshObj(const SphereMeshOptions &options, const std::string &command);
+std::string sphereMeshCommand(const SphereMeshOptions &options);
+
 // The original's "scene" (planes, triangles and spheres: 621 primitives) and "objects"
 // (various triangle objects: 5436 triangles) benchmarks, laid out by hand in code.
 std::string mixedScene(const std::string &command);

@@ -6,6 +6,8 @@ packages=(
     libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
     libglfw3-dev libglm-dev libtinyobjloader-dev libopenimageio-dev openimageio-tools
     libgtest-dev libcli11-dev nlohmann-json3-dev libimgui-dev xvfb xauth
+    libxxhash-dev # the grid cache's keys and checksums (engine/cache)
+    libjemalloc-dev # the tools' allocator: huge pages for big meshes (tools/common/allocator_config.cpp)
     python3 # tools/scripts/mutants.py (the list check is a test) and benchmark.py
     python3-matplotlib python3-numpy python3-openimageio # studies.py and its test
     libembree-dev # only prism-gridbench's baseline: Prism builds without it
