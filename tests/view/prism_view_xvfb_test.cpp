@@ -138,6 +138,44 @@ TEST_F(PrismViewXvfb, BrokenReloadKeepsTheLastGoodScene) {
     EXPECT_LE(largest, 1e-6) << "the good scene stayed on screen";
 }
 
+// A reload that changes only a material keeps the grid (no build: the geometry's key is the
+// same) and shows the edited scene exactly as prism-render renders it; one that moves a sphere
+// builds anew.
+TEST_F(PrismViewXvfb, MaterialEditReloadKeepsTheGrid) {
+    const std::string geometry = "camera eye 0 0 5 look 0 0 0\nlight 2 2 5\n"
+                                 "sphere 0 0 0 1 ball\nsphere 1.5 0 -1 0.5 ball\n";
+    write("red.scene", "material ball color 0.9 0.1 0.1\n" + geometry);
+    fs::path blue =
+        write("blue.scene", "material ball color 0.1 0.2 0.9 specular 0.5\n" + geometry);
+    fs::path moved = write("moved.scene", "material ball color 0.9 0.1 0.1\n"
+                                          "camera eye 0 0 5 look 0 0 0\nlight 2 2 5\n"
+                                          "sphere 0 0.5 0 1 ball\nsphere 1.5 0 -1 0.5 ball\n");
+    fs::path shot = dir_ / "view.exr", reference = dir_ / "render.exr";
+    CliResult view =
+        run(underXvfb((dir_ / "red.scene").string() +
+                      " --size 64x48 --spp 2 --script-frames 6 --script-reload 3:" + blue.string() +
+                      " --screenshot " + shot.string() + " --validation"));
+    ASSERT_EQ(viewExit(view), 0) << view.out;
+    EXPECT_NE(view.out.find("reloaded blue.scene (same geometry: grid kept)"), std::string::npos)
+        << view.out;
+    CliResult render = run(std::string(PRISM_RENDER_EXE) + " " + blue.string() +
+                           " --size 64x48 --spp 2 --quiet --no-cache -o " + reference.string());
+    ASSERT_EQ(render.exitCode, 0) << render.out;
+    prism::LoadedImage a = prism::readImage(shot), b = prism::readImage(reference);
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    double largest = 0.0;
+    for (size_t i = 0; i < a.pixels.size(); ++i)
+        largest = std::max(largest, double(std::abs(a.pixels[i] - b.pixels[i])));
+    EXPECT_LE(largest, 1e-6) << "the edited material is shown, with the kept grid";
+
+    CliResult move = run(
+        underXvfb((dir_ / "red.scene").string() +
+                  " --size 64x48 --spp 1 --script-frames 4 --script-reload 2:" + moved.string()));
+    ASSERT_EQ(viewExit(move), 0) << move.out;
+    EXPECT_NE(move.out.find("reloaded moved.scene"), std::string::npos) << move.out;
+    EXPECT_EQ(move.out.find("grid kept"), std::string::npos) << "geometry moved: built anew";
+}
+
 // Far from the origin the viewer shows what it shows at the origin: the scene is centred on the
 // camera when loaded, and a jump of 1000 view distances and back re-centres twice (a grid
 // rebuild each). The whole image is compared with the unit scene's prism-render: at most 0.1%

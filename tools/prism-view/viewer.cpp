@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include <GLFW/glfw3.h>
 
+#include "accel/grid_cache.h"
 #include "core/error.h"
 #include "core/timer.h"
 #include "render_metadata.h"
@@ -86,9 +88,18 @@ void Viewer::buildTracer(const Scene &scene) {
         gridOptions.mode = GridOptions::Mode::Off;
     else if (gridOptions.mode == GridOptions::Mode::Off)
         gridOptions.mode = GridOptions::Mode::Auto; // --grid off, then switched on
-    Timer buildTimer;
-    Grid grid = buildGrid(scene, gridOptions);
-    double buildMs = buildTimer.elapsedMs();
+    // A reload that changed no geometry (a material, a light, a texture) or a toggle other than
+    // the grid's keeps the grid: its key is what the build reads (accel/grid_cache.h).
+    std::string gridKey = gridCacheKey(scene, gridOptions);
+    bool reuse = tracer_ && gridKey == gridKey_;
+    std::optional<Grid> built;
+    double buildMs = gridBuildMs_;
+    if (!reuse) {
+        Timer buildTimer;
+        built = buildGrid(scene, gridOptions);
+        buildMs = buildTimer.elapsedMs();
+    }
+    const Grid &grid = reuse ? grid_ : *built;
     TracerOptions tracerOptions;
     tracerOptions.maxDepth = options_.maxDepth;
     tracerOptions.shadows = toggles_.shadows;
@@ -101,7 +112,10 @@ void Viewer::buildTracer(const Scene &scene) {
     auto tracer = std::make_unique<RayTracer>(*context_, scene, grid, width, height, tracerOptions);
     drainFrames();
     tracer_ = std::move(tracer);
-    grid_ = std::move(grid);
+    if (built)
+        grid_ = std::move(*built);
+    gridKey_ = std::move(gridKey);
+    gridReused_ = reuse;
     gridBuildMs_ = buildMs;
     present_->setSource(tracer_->accumulation());
     resetCounters_ = true;
@@ -115,7 +129,8 @@ bool Viewer::reloadScene() {
         // Centred where the flown camera is, which stays where it was (in the file's terms).
         showScene(source_.load(), scene_.origin + fly_.camera().eye);
         sceneError_.clear();
-        notice_ = "reloaded " + source_.path().filename().string();
+        notice_ = "reloaded " + source_.path().filename().string() +
+                  (gridReused_ ? " (same geometry: grid kept)" : "");
         std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
         return true;
     } catch (const Error &e) {

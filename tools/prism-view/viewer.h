@@ -104,6 +104,8 @@ private:
     Scene loaded_; // as the file has it: each centring starts from here (scene_origin.h)
     Scene scene_;  // centred on where the camera was when last centred
     Grid grid_;
+    std::string gridKey_;     // gridCacheKey of grid_: an unchanged key keeps the grid
+    bool gridReused_ = false; // the last buildTracer kept grid_ instead of building
     double gridBuildMs_ = 0.0;
     uint32_t recenterings_ = 0; // the fly camera went far from the origin (scene_origin.h)
     FeatureToggles toggles_;
