@@ -3,7 +3,8 @@
 //
 // Why: on the machines Prism is measured on (virtual machines), the first write to each 4 KiB
 // page of fresh memory costs a page fault of several microseconds: 144 MB of triangles took
-// 387 ms to touch, against 14-37 ms in 2 MiB pages. Loading, building and uploading a
+// 387 ms to touch, against 14-37 ms in 2 MiB pages (a physical machine's faults cost about a
+// tenth as much; huge pages still save most of them). Loading, building and uploading a
 // million-triangle mesh spent a third of its time in such faults (issue 31, docs/benchmarks.md
 // "The first image"). Linux only backs memory with huge pages where the program asks
 // (transparent_hugepage = madvise, the usual default), which is what adviseHugePages does.
