@@ -27,7 +27,7 @@ ComputePipeline::ComputePipeline(const Context &context, const ComputePipelineDe
         pipelineInfo.stage.pName = "main";
         pipelineInfo.stage.pSpecializationInfo = specialization.pointer();
         pipelineInfo.layout = layout_;
-        VK_CHECK(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr,
+        VK_CHECK(vkCreateComputePipelines(device_, context.pipelineCache(), 1, &pipelineInfo, nullptr,
                                           &pipeline_));
     } catch (...) {
         destroy();

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "vk/keep_libraries_loaded.h"
+#include "vk/pipeline_cache.h"
 #include "vk/vk_check.h"
 
 namespace prism::vk {
@@ -61,6 +62,7 @@ Context::Context(const ContextOptions &options) {
         createInstance(options);
         pickPhysicalDevice(options);
         createDevice(options);
+        pipelineCache_ = std::make_unique<PipelineCache>(*this, options.pipelineStore);
     } catch (...) {
         destroy(); // tolerates half-built state
         throw;
@@ -71,7 +73,20 @@ Context::~Context() {
     destroy();
 }
 
+VkPipelineCache Context::pipelineCache() const {
+    return pipelineCache_->handle();
+}
+
+uint64_t Context::savePipelineCache() const {
+    return pipelineCache_->save();
+}
+
+uint64_t Context::pipelineCacheLoadedBytes() const {
+    return pipelineCache_->loadedBytes();
+}
+
 void Context::destroy() {
+    pipelineCache_.reset();
     if (device_)
         vkDestroyDevice(device_, nullptr);
     device_ = VK_NULL_HANDLE;

@@ -2,12 +2,19 @@
 // The Vulkan instance, the chosen physical device, its logical device and compute queue.
 // One owner for each; destroyed in reverse creation order.
 #include <atomic>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
+namespace prism {
+class DiskCache;
+}
+
 namespace prism::vk {
+
+class PipelineCache;
 
 struct ContextOptions {
     bool validation = false;                      // Khronos validation layer + debug messenger
@@ -17,6 +24,8 @@ struct ContextOptions {
     // VK_KHR_shader_clock's subgroup clock, which the profiling tracer reads (prism-bench
     // --profile); a device without it is refused by name.
     bool shaderClock = false;
+    // Where the pipeline cache is kept between runs (vk/pipeline_cache.h); none: in memory only.
+    const DiskCache *pipelineStore = nullptr;
 };
 
 class Context {
@@ -49,6 +58,11 @@ public:
     uint32_t validationMessageCount() const { return validationMessages_.load(); }
     bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
     bool shaderClockEnabled() const { return shaderClock_; }
+    // The cache every pipeline of this device is created through.
+    VkPipelineCache pipelineCache() const;
+    // Writes the pipeline cache to ContextOptions::pipelineStore if it changed; bytes written.
+    uint64_t savePipelineCache() const;
+    uint64_t pipelineCacheLoadedBytes() const;
 
 private:
     void destroy();
@@ -70,6 +84,7 @@ private:
     uint32_t queueFamily_ = 0;
     bool shaderClock_ = false;
     std::atomic<uint32_t> validationMessages_{0};
+    std::unique_ptr<PipelineCache> pipelineCache_; // destroyed before the device
 };
 
 } // namespace prism::vk

@@ -78,7 +78,7 @@ GraphicsPipeline::GraphicsPipeline(const Context &context, const GraphicsPipelin
         info.layout = layout_;
         info.renderPass = desc.renderPass;
         info.subpass = 0;
-        VK_CHECK(vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_));
+        VK_CHECK(vkCreateGraphicsPipelines(device_, context.pipelineCache(), 1, &info, nullptr, &pipeline_));
     } catch (...) {
         destroy();
         throw;

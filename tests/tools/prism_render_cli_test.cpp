@@ -65,8 +65,9 @@ TEST_F(PrismRenderCli, BadOptionsFailClearly) {
 }
 
 // The grid cache (accel/grid_cache.h): the first render builds and stores the grid, the second
-// reads it back, and both images equal a render without the cache, pixel for pixel (the AOVs
-// too: the grid decides which triangle each ray hits).
+// reads it back (and the pipeline cache with it, vk/pipeline_cache.h), and both images equal a
+// render without the cache, pixel for pixel (the AOVs too: the grid decides which triangle each ray
+// hits).
 TEST_F(PrismRenderCli, GridFromTheCacheRendersTheSameImage) {
     fs::path cache = dir() / "cache";
     std::string base = std::string(PRISM_SCENES_DIR) + "/bunny.scene --size 48x36 --depth 2 " +
@@ -80,6 +81,19 @@ TEST_F(PrismRenderCli, GridFromTheCacheRendersTheSameImage) {
         ASSERT_EQ(r.exitCode, 0) << r.out;
         nlohmann::json stats = nlohmann::json::parse(r.stdoutOnly);
         EXPECT_EQ(stats["grid_cache"]["state"].get<std::string>(), state);
+        // The device's pipeline cache goes the same way: stored by the first run, given to the
+        // driver by the second (lavapipe's is a header alone, but a header is bytes).
+        uint64_t loaded = stats["pipeline_cache"]["loaded_bytes"].get<uint64_t>();
+        uint64_t saved = stats["pipeline_cache"]["saved_bytes"].get<uint64_t>();
+        if (std::string(state) == "miss") {
+            EXPECT_EQ(loaded, 0u);
+            EXPECT_GT(saved, 0u);
+        } else if (std::string(state) == "hit") {
+            EXPECT_GT(loaded, 0u);
+            EXPECT_EQ(saved, 0u) << "unchanged: not written again";
+        } else {
+            EXPECT_EQ(loaded + saved, 0u);
+        }
         images.push_back(prism::readImage(out));
     }
     ASSERT_FALSE(images[0].pixels.empty());
@@ -88,7 +102,7 @@ TEST_F(PrismRenderCli, GridFromTheCacheRendersTheSameImage) {
     size_t entries = 0;
     for ([[maybe_unused]] const auto &e : fs::directory_iterator(cache))
         ++entries;
-    EXPECT_EQ(entries, 1u);
+    EXPECT_EQ(entries, 2u) << "the grid's entry and the pipelines'";
     CliResult both =
         run(base + (dir() / "x.exr").string() + " --no-cache --cache " + cache.string());
     EXPECT_NE(both.exitCode, 0);

@@ -51,6 +51,7 @@ struct RenderOutcome {
     std::array<uint32_t, 3> tiles{};     // of the last frame: FrameResult::tiles
     std::vector<ArrayBytes> sceneArrays; // the scene on the device (Vulkan only)
     std::string device;
+    uint64_t pipelineCacheLoaded = 0, pipelineCacheSaved = 0; // bytes (vk/pipeline_cache.h)
     VulkanPhases phases;
 };
 
@@ -59,10 +60,11 @@ struct RenderOutcome {
 // the driver and LLVM) that no longer adds to the wait (issue 31).
 class ContextInBackground {
 public:
-    explicit ContextInBackground(const RenderOptions &o) {
+    ContextInBackground(const RenderOptions &o, const DiskCache *pipelineStore) {
         vk::ContextOptions options;
         options.validation = o.validation;
         options.deviceNameFilter = o.deviceFilter;
+        options.pipelineStore = pipelineStore;
         made_ = std::async(std::launch::async, [options] {
             Timer timer;
             auto context = std::make_unique<vk::Context>(options);
@@ -132,6 +134,8 @@ RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const G
     if (context.validationMessageCount() > 0)
         throw Error(std::to_string(context.validationMessageCount()) +
                     " Vulkan validation messages (printed above); refusing to write the image");
+    out.pipelineCacheLoaded = context.pipelineCacheLoadedBytes();
+    out.pipelineCacheSaved = context.savePipelineCache();
     out.image.width = int(traced.width);
     out.image.height = int(traced.height);
     out.image.rgba = std::move(traced.rgba);
@@ -180,9 +184,13 @@ RenderOutcome renderOnCpu(const RenderOptions &o, const Scene &scene) {
 
 void runRender(const RenderOptions &o) {
     Timer process; // from here (the command line is parsed) to the image on disk
+    // Built grids and the device's pipeline cache are kept here between runs.
+    std::optional<DiskCache> cache;
+    if (!o.noCache && !o.cacheDir.empty())
+        cache.emplace(DiskCacheOptions{o.cacheDir});
     std::optional<ContextInBackground> context;
     if (o.backend == Backend::Vulkan)
-        context.emplace(o);
+        context.emplace(o, cache ? &*cache : nullptr);
     Timer loadTimer;
     Scene scene = loadScene(o.scenePath);
     centerOnCamera(scene); // both backends trace the same camera-relative scene
@@ -192,9 +200,6 @@ void runRender(const RenderOptions &o) {
             std::fprintf(stderr, "%s\n", warning.c_str());
 
     Timer buildTimer;
-    std::optional<DiskCache> cache;
-    if (!o.noCache && !o.cacheDir.empty())
-        cache.emplace(DiskCacheOptions{o.cacheDir});
     GridCacheOutcome cacheOutcome;
     Grid grid =
         buildGridCached(scene, o.grid, GridCachePolicy{cache ? &*cache : nullptr}, &cacheOutcome);
@@ -275,7 +280,9 @@ void runRender(const RenderOptions &o) {
              {{"state", cacheOutcome.state},
               {"key_ms", cacheOutcome.keyMs},
               {"read_ms", cacheOutcome.readMs},
-              {"store_ms", cacheOutcome.storeMs}}}};
+              {"store_ms", cacheOutcome.storeMs}}},
+            {"pipeline_cache",
+             {{"loaded_bytes", out.pipelineCacheLoaded}, {"saved_bytes", out.pipelineCacheSaved}}}};
         if (o.backend == Backend::Vulkan) // which tracer ran each 8x8 tile (render/traced_tiles.h)
             stats["tiles"] = {{"full", out.tiles[0]},
                               {"planes_only", out.tiles[1]},
