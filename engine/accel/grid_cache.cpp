@@ -129,9 +129,9 @@ Grid buildGridCached(const Scene &scene, const GridOptions &options, const GridC
     o.key = gridCacheKey(scene, options);
     o.keyMs = timer.elapsedMs();
     timer.reset();
-    if (std::optional<std::string> entry = policy.cache->load("grid", o.key, kGridCacheFormat)) {
+    if (std::optional<CacheEntry> entry = policy.cache->load("grid", o.key, kGridCacheFormat)) {
         try {
-            Grid grid = unpackGrid(*entry);
+            Grid grid = unpackGrid(entry->payload);
             o.readMs = timer.elapsedMs();
             o.state = "hit";
             return grid;

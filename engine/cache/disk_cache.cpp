@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <system_error>
 #include <vector>
 
@@ -13,7 +12,7 @@
 #include <unistd.h>
 
 #include "cache/content_hash.h"
-#include "core/huge_pages.h"
+#include "core/error.h"
 
 namespace prism {
 namespace {
@@ -31,21 +30,6 @@ struct EntryHeader {
     char key[64];
 };
 static_assert(sizeof(EntryHeader) == 96);
-
-bool readWhole(const std::filesystem::path &path, std::string &bytes) {
-    std::ifstream in(path, std::ios::binary | std::ios::ate);
-    if (!in)
-        return false;
-    std::streamoff size = in.tellg();
-    if (size < 0)
-        return false;
-    bytes.reserve(size_t(size));
-    adviseHugePages(bytes.data(), size_t(size));
-    bytes.resize(size_t(size));
-    in.seekg(0);
-    in.read(bytes.data(), size);
-    return in.gcount() == size;
-}
 
 // Writes all of `bytes` to fd, or returns false.
 bool writeAll(int fd, const char *bytes, size_t size) {
@@ -86,18 +70,23 @@ void DiskCache::warn(const std::string &message) const {
         std::fprintf(stderr, "prism: warning: cache: %s\n", message.c_str());
 }
 
-std::optional<std::string> DiskCache::load(std::string_view kind, std::string_view key,
-                                           uint32_t format) const {
+std::optional<CacheEntry> DiskCache::load(std::string_view kind, std::string_view key,
+                                          uint32_t format) const {
     std::filesystem::path path = entryPath(kind, key);
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec))
         return std::nullopt;
-    std::string bytes;
+    CacheEntry entry;
+    std::string_view bytes;
     const char *problem = nullptr;
     EntryHeader header{};
-    if (!readWhole(path, bytes))
+    try {
+        entry.file = std::make_unique<MappedFile>(path, "cache entry");
+        bytes = entry.file->bytes();
+    } catch (const Error &) {
         problem = "cannot be read";
-    else if (bytes.size() < sizeof header)
+    }
+    if (!problem && bytes.size() < sizeof header)
         problem = "is truncated";
     if (!problem) {
         std::memcpy(&header, bytes.data(), sizeof header);
@@ -121,8 +110,8 @@ std::optional<std::string> DiskCache::load(std::string_view kind, std::string_vi
     }
     // Least recently used: a hit makes the entry new again.
     std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), ec);
-    bytes.erase(0, sizeof header);
-    return bytes;
+    entry.payload = bytes.substr(sizeof header);
+    return entry;
 }
 
 void DiskCache::store(std::string_view kind, std::string_view key, uint32_t format,

@@ -14,9 +14,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
+
+#include "core/mapped_file.h"
 
 namespace prism {
 
@@ -25,6 +28,14 @@ struct DiskCacheOptions {
     uint64_t maxBytes = uint64_t(4) << 30;
     // Where warnings go (one line each, no newline); stderr when empty.
     std::function<void(const std::string &)> warn;
+};
+
+// An entry's payload, checked, as the file's mapped bytes (no copy: a grid's 73 MB entry is read
+// straight from the page cache into its arrays). Entries are only ever replaced by renaming a
+// new file over them and trimmed by unlinking, so a mapped entry never changes under its reader.
+struct CacheEntry {
+    std::unique_ptr<MappedFile> file;
+    std::string_view payload;
 };
 
 class DiskCache {
@@ -37,8 +48,8 @@ public:
 
     // The payload stored under (kind, key) by a writer of `format`, or nothing: absent, or
     // damaged or stale (then removed, with a warning).
-    std::optional<std::string> load(std::string_view kind, std::string_view key,
-                                    uint32_t format) const;
+    std::optional<CacheEntry> load(std::string_view kind, std::string_view key,
+                                   uint32_t format) const;
     // Stores `payload` under (kind, key), then trims the cache to its size. Never throws.
     void store(std::string_view kind, std::string_view key, uint32_t format,
                std::string_view payload) const;

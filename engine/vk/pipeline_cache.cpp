@@ -23,8 +23,8 @@ PipelineCache::PipelineCache(const Context &context, const DiskCache *store)
     : device_(context.device()), store_(store) {
     if (store_) {
         key_ = pipelineCacheKey(context.properties());
-        if (std::optional<std::string> data = store_->load("pipelines", key_, kPipelineCacheFormat))
-            loaded_ = std::move(*data);
+        if (std::optional<CacheEntry> entry = store_->load("pipelines", key_, kPipelineCacheFormat))
+            loaded_ = std::string(entry->payload);
     }
     VkPipelineCacheCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
     info.initialDataSize = loaded_.size();

@@ -48,9 +48,9 @@ TEST(DiskCache, GivesBackWhatWasStored) {
     EXPECT_FALSE(f.cache.load("grid", kKey, 1).has_value());
     std::string bytes = payload(100'000, 3);
     f.cache.store("grid", kKey, 1, bytes);
-    std::optional<std::string> back = f.cache.load("grid", kKey, 1);
+    std::optional<CacheEntry> back = f.cache.load("grid", kKey, 1);
     ASSERT_TRUE(back.has_value());
-    EXPECT_EQ(*back, bytes);
+    EXPECT_EQ(back->payload, bytes);
     EXPECT_FALSE(f.cache.load("mesh", kKey, 1).has_value()) << "kinds are apart";
     EXPECT_TRUE(f.warnings.empty());
     EXPECT_EQ(filesIn(f.cache.directory()), 1u) << "no temporary file left behind";
@@ -86,7 +86,9 @@ TEST(DiskCache, DamagedStaleOrForeignEntriesAreRemovedWithAWarning) {
         EXPECT_FALSE(std::filesystem::exists(f.cache.entryPath("grid", kKey))) << what;
         // And the next store makes it whole again.
         f.cache.store("grid", kKey, 1, payload(5000, 1));
-        EXPECT_EQ(f.cache.load("grid", kKey, 1), payload(5000, 1)) << what;
+        std::optional<CacheEntry> again = f.cache.load("grid", kKey, 1);
+        ASSERT_TRUE(again.has_value()) << what;
+        EXPECT_EQ(again->payload, payload(5000, 1)) << what;
     }
     {
         Fixture f; // written by another version of the format
@@ -150,8 +152,8 @@ TEST(DiskCache, TwoProcessesFillingOneEntryLeaveOneWholeEntry) {
                                              [](const std::string &) { ::_exit(3); }});
             for (int round = 0; round < 20; ++round) {
                 cache.store("grid", kKey, 1, bytes);
-                std::optional<std::string> back = cache.load("grid", kKey, 1);
-                if (back && *back != bytes)
+                std::optional<CacheEntry> back = cache.load("grid", kKey, 1);
+                if (back && back->payload != bytes)
                     ::_exit(2);
             }
             ::_exit(0);
@@ -167,7 +169,9 @@ TEST(DiskCache, TwoProcessesFillingOneEntryLeaveOneWholeEntry) {
     std::vector<std::string> warnings;
     DiskCache cache(DiskCacheOptions{dir.path(), uint64_t(1) << 30,
                                      [&](const std::string &w) { warnings.push_back(w); }});
-    EXPECT_EQ(cache.load("grid", kKey, 1), bytes);
+    std::optional<CacheEntry> back = cache.load("grid", kKey, 1);
+    ASSERT_TRUE(back.has_value());
+    EXPECT_EQ(back->payload, bytes);
     EXPECT_TRUE(warnings.empty());
     EXPECT_EQ(filesIn(dir.path()), 1u);
 }
