@@ -36,6 +36,30 @@ void flushToDisk(const std::filesystem::path &path) {
 
 } // namespace
 
+void checkCanStage(const std::filesystem::path &target) {
+    auto fail = [&](const std::string &why) {
+        throw Error("cannot write image '" + target.string() + "': " + why);
+    };
+    std::filesystem::path dir = target.parent_path().empty() ? "." : target.parent_path();
+    std::error_code ec;
+    std::filesystem::file_status status = std::filesystem::status(dir, ec);
+    if (!std::filesystem::exists(status))
+        fail("the directory '" + dir.string() + "' does not exist");
+    if (!std::filesystem::is_directory(status))
+        fail("'" + dir.string() + "' is not a directory");
+    if (std::filesystem::is_directory(target, ec))
+        fail("it is a directory");
+    std::filesystem::path probe = tempPathFor(target);
+    int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0 && errno != EEXIST)
+        fail(std::string("cannot create a file in '") + dir.string() +
+             "': " + std::strerror(errno));
+    if (fd >= 0) {
+        ::close(fd);
+        std::filesystem::remove(probe, ec);
+    }
+}
+
 StagedFile::StagedFile(std::filesystem::path target)
     : target_(std::move(target)), temp_(tempPathFor(target_)) {}
 

@@ -27,4 +27,10 @@ private:
     bool committed_ = false;
 };
 
+// Checks, before any work, that `target` can be written the way StagedFile writes it: its
+// directory exists and a file can be made there (a probe, made and removed at once), and it is
+// not a directory. Throws prism::Error naming the path and why, so that a typo in `-o` fails
+// in a moment instead of after a long render.
+void checkCanStage(const std::filesystem::path &target);
+
 } // namespace prism

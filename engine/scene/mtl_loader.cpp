@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <sstream>
+#include <utility>
 
 namespace prism {
 namespace {
@@ -101,26 +103,63 @@ private:
             throw LineError("'" + std::string(words_[0]) + "' needs 1 or 3 numbers");
         return glm::vec3(mtlNumber(words_[1]), mtlNumber(words_[2]), mtlNumber(words_[3]));
     }
-    // With options (`map_Kd -s 1 1 1 file.png`) the file is the last word; without, the whole
-    // rest of the line, so names with spaces work.
-    std::string texturePath() const {
+    // A map statement's words split into its options and its file, as tinyobjloader reads
+    // them: options may stand before or after the file (`map_bump -imfchan r bump.jpg -bm 1.5`,
+    // as in tinyobjloader's own test files), each followed by its fixed number of values (-o,
+    // -s and -t by one to three numbers). The file is the words that are neither, joined by
+    // spaces; a line without options keeps its whole rest, so names with spaces work.
+    struct MapStatement {
+        std::string path;
+        std::optional<float> bumpMultiplier;
+    };
+    MapStatement mapStatement() const {
         needValues();
-        std::string path(words_[1].front() == '-' ? words_.back() : restAfterFirstWord(line_));
-        std::replace(path.begin(), path.end(), '\\', '/');
-        return path;
-    }
-
-    // `-bm MULT` among a bump map's options (1 without); the file must still follow it.
-    float bumpMultiplier() const {
+        MapStatement map;
+        bool anyOption = false;
+        std::string path;
         for (size_t i = 1; i < words_.size(); ++i) {
-            if (lowerCase(words_[i]) != "-bm")
+            std::string option = lowerCase(words_[i]);
+            int values = optionValues(option);
+            if (values == 0) {
+                if (!path.empty())
+                    path += ' ';
+                path += words_[i];
                 continue;
-            if (i + 2 >= words_.size())
-                throw LineError("'-bm' needs a number and then the bump map's file");
-            return mtlNumber(words_[i + 1]);
+            }
+            anyOption = true;
+            if (option == "-bm") {
+                if (i + 1 >= words_.size())
+                    throw LineError("'-bm' needs a number");
+                map.bumpMultiplier = mtlNumber(words_[i + 1]);
+            }
+            size_t first = i + 1;
+            if (values < 0) // -o, -s, -t: up to three numbers, at least one
+                while (i + 1 < words_.size() && i + 1 < first + 3 && parseFloat(words_[i + 1]).ok())
+                    ++i;
+            else
+                i = std::min(words_.size() - 1, i + size_t(values));
         }
-        return 1.0f;
+        map.path = anyOption ? path : std::string(restAfterFirstWord(line_));
+        if (map.path.empty())
+            throw LineError("'" + std::string(words_[0]) + "' needs the image's file name");
+        std::replace(map.path.begin(), map.path.end(), '\\', '/');
+        return map;
     }
+    // How many values follow a texture option (-1: one to three numbers); 0 for a word that is
+    // no option (the MTL specification's options, and tinyobjloader's -colorspace).
+    static int optionValues(const std::string &word) {
+        static const std::pair<const char *, int> kOptions[] = {
+            {"-blendu", 1},  {"-blendv", 1}, {"-boost", 1},  {"-mm", 2},        {"-o", -1},
+            {"-s", -1},      {"-t", -1},     {"-texres", 1}, {"-clamp", 1},     {"-bm", 1},
+            {"-imfchan", 1}, {"-type", 1},   {"-cc", 1},     {"-colorspace", 1}};
+        for (const auto &[name, values] : kOptions)
+            if (word == name)
+                return values;
+        return 0;
+    }
+    std::string texturePath() const { return mapStatement().path; }
+    // `-bm MULT` among a bump map's options, anywhere on the line (1 without).
+    float bumpMultiplier() const { return mapStatement().bumpMultiplier.value_or(1.0f); }
 
     std::string_view line_;
     const std::vector<std::string_view> &words_;

@@ -91,12 +91,32 @@ TEST(MtlLoader, BumpAndNormalMaps) {
     EXPECT_FALSE(plain.hasSurfaceMaps()); // the caller loads the images
 }
 
+// Options after the file name, as tinyobjloader reads them and as its own test files write
+// them (issue 35: `map_bump -imfchan r bump.jpg -bm 1.5` was refused).
+TEST(MtlLoader, TextureOptionsOnEitherSideOfTheFile) {
+    MtlLibrary lib = parse("newmtl a\nmap_bump -imfchan r bump.jpg -bm 1.5\n"
+                           "newmtl b\nmap_Kd tex.png -s 2 2\n"
+                           "newmtl c\nmap_Kd -o 0.5 my tex.png -clamp on\n"
+                           "newmtl d\nbump -mm 0 1 h.png -bm -0.5 -texres 512\n"
+                           "newmtl e\nnorm -blendu off n.png -colorspace linear\n");
+    ASSERT_EQ(lib.materials.size(), 5u);
+    EXPECT_EQ(lib.materials[0].bumpPath, "bump.jpg");
+    EXPECT_EQ(lib.materials[0].bumpScale, 1.5f);
+    EXPECT_EQ(lib.materials[1].texturePath, "tex.png");
+    EXPECT_EQ(lib.materials[2].texturePath, "my tex.png");
+    EXPECT_EQ(lib.materials[3].bumpPath, "h.png");
+    EXPECT_EQ(lib.materials[3].bumpScale, -0.5f);
+    EXPECT_EQ(lib.materials[4].normalPath, "n.png");
+}
+
 TEST(MtlLoader, BadBumpMultipliersAndMissingFilesAreErrorsAtTheirLine) {
     std::vector<std::string> warnings;
     test::expectFileError([&] { parseMtl("newmtl a\nbump -bm x h.png\n", "lib.mtl", warnings); },
                           "lib.mtl", 2, "bad number 'x'");
     test::expectFileError([&] { parseMtl("newmtl a\n\nbump -bm 0.5\n", "lib.mtl", warnings); },
-                          "lib.mtl", 3, "'-bm' needs a number and then the bump map's file");
+                          "lib.mtl", 3, "'bump' needs the image's file name");
+    test::expectFileError([&] { parseMtl("newmtl a\nbump h.png -bm\n", "lib.mtl", warnings); },
+                          "lib.mtl", 2, "'-bm' needs a number");
     test::expectFileError([&] { parseMtl("newmtl a\nnorm\n", "lib.mtl", warnings); }, "lib.mtl", 2,
                           "'norm' needs a value");
     test::expectFileError([&] { parseMtl("newmtl a\nmap_Bump\n", "lib.mtl", warnings); }, "lib.mtl",

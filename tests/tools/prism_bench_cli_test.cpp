@@ -40,6 +40,13 @@ TEST_F(PrismBenchCli, HelpNamesTheVariants) {
         EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 
+// --version answers without a scene, as the other tools do (issue 35).
+TEST_F(PrismBenchCli, VersionNeedsNoScene) {
+    CliResult r = bench("--version");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("prism-bench 0.1.0"), std::string::npos) << r.out;
+}
+
 TEST_F(PrismBenchCli, BadVariantIsNamed) {
     for (const char *variant :
          {"fast", "offset=0", "offset=-1", "offset=x", "offset=inf", "density=0", "triangle=fast",

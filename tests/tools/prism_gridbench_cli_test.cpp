@@ -30,6 +30,13 @@ TEST_F(PrismGridbenchCli, HelpNamesTheOptions) {
         EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 
+// --version answers without a scene, as the other tools do (issue 35).
+TEST_F(PrismGridbenchCli, VersionNeedsNoScene) {
+    CliResult r = gridbench("--version");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_NE(r.out.find("prism-gridbench 0.1.0"), std::string::npos) << r.out;
+}
+
 TEST_F(PrismGridbenchCli, BadGridIsNamed) {
     CliResult r = gridbench(scene_.string() + " --grids regular,fine");
     EXPECT_NE(r.exitCode, 0);

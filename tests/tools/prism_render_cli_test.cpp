@@ -46,6 +46,22 @@ TEST_F(PrismRenderCli, SceneErrorNamesFileAndLineAndWritesNothing) {
     EXPECT_EQ(filesInDir(), 1u) << "only the scene itself: no image, no temporary file";
 }
 
+// A bad output path fails before the scene is even read (issue 35: it used to be found after
+// the whole render): the scene here is broken too, and the message is the output's.
+TEST_F(PrismRenderCli, BadOutputPathFailsBeforeAnyWork) {
+    fs::path scene = write("bad.scene", "sphere 0 0 0 -1\n");
+    CliResult missing = run(scene.string() + " -o " + (dir() / "no/such/dir/x.png").string());
+    EXPECT_NE(missing.exitCode, 0);
+    EXPECT_NE(missing.out.find("does not exist"), std::string::npos) << missing.out;
+    EXPECT_EQ(missing.out.find("bad.scene:1"), std::string::npos) << "the scene was not read";
+    fs::create_directories(dir() / "out.png");
+    CliResult isDir = run(scene.string() + " -o " + (dir() / "out.png").string());
+    EXPECT_NE(isDir.exitCode, 0);
+    EXPECT_NE(isDir.out.find("it is a directory"), std::string::npos) << isDir.out;
+    fs::remove(dir() / "out.png");
+    EXPECT_EQ(filesInDir(), 1u) << "nothing written, no probe left";
+}
+
 TEST_F(PrismRenderCli, BadOptionsFailClearly) {
     fs::path scene = write("ok.scene", "sphere 0 0 0 1\n");
     std::string base = scene.string() + " -o " + (dir() / "out.png").string();

@@ -160,6 +160,7 @@ nlohmann::json toJson(const BenchResult &r) {
 int main(int argc, char **argv) {
     CLI::App app{"prism-bench: times scenes under tracer variants, interleaving frames so that "
                  "ratios between variants hold on a noisy machine."};
+    app.set_version_flag("--version", "prism-bench 0.1.0");
     std::vector<std::string> scenes;
     std::string size = "1024x768", variantList = "auto", jsonPath, deviceFilter;
     BenchSettings settings;

@@ -159,6 +159,7 @@ int main(int argc, char **argv) {
     CLI::App app{"prism-gridbench: times grid builds (median of --runs) and reports what each grid "
                  "holds and costs a camera ray, beside Embree's BVH build of the same primitives "
                  "where Embree is installed. CPU only."};
+    app.set_version_flag("--version", "prism-gridbench 0.1.0");
     std::vector<std::string> scenes;
     std::string gridList = "regular,adaptive,auto", jsonPath;
     uint32_t runs = 5;

@@ -18,6 +18,7 @@
 #include "core/median.h"
 #include "core/timer.h"
 #include "io/image_writer.h"
+#include "io/staged_file.h"
 #include "progress_line.h"
 #include "reference/reference_renderer.h"
 #include "render/ray_tracer.h"
@@ -183,7 +184,8 @@ RenderOutcome renderOnCpu(const RenderOptions &o, const Scene &scene) {
 } // namespace
 
 void runRender(const RenderOptions &o) {
-    Timer process; // from here (the command line is parsed) to the image on disk
+    Timer process;               // from here (the command line is parsed) to the image on disk
+    checkCanStage(o.outputPath); // a bad -o fails now, not after the render
     // Built grids and the device's pipeline cache are kept here between runs.
     std::optional<DiskCache> cache;
     if (!o.noCache && !o.cacheDir.empty())
