@@ -16,7 +16,9 @@ start with an empty grid cache each; the warm runs then read the grid the first 
                                  [--kinds tori,sphere-mesh] [--runs 3] [--work DIR]
                                  [--json FILE] [--chart FILE.png] [--no-embree] [--no-cache]
 
-Prints a Markdown table (medians of the runs); docs/benchmarks.md, "The first image", keeps it.
+Prints a Markdown table (medians of the runs); docs/benchmarks.md, "The first image of big
+meshes", keeps it. Needs GNU time (/usr/bin/time) and, for --chart, Debian's python3-matplotlib
+(run it with /usr/bin/python3).
 """
 import argparse
 import json

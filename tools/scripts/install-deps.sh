@@ -10,6 +10,7 @@ packages=(
     libjemalloc-dev # the tools' allocator: huge pages for big meshes (tools/common/allocator_config.cpp)
     python3 # tools/scripts/mutants.py (the list check is a test) and benchmark.py
     python3-matplotlib python3-numpy python3-openimageio # studies.py and its test
+    time # GNU time: first_image.py's peak memory
     libembree-dev # only prism-gridbench's baseline: Prism builds without it
     # xauth: xvfb-run (the prism-view tests) needs it; xvfb only recommends it
 )
