@@ -41,6 +41,14 @@ int viewExit(const CliResult &r) {
     return at == std::string::npos ? -1 : std::atoi(r.out.c_str() + at + 16);
 }
 
+// The largest difference of any channel of any pixel (images of the same size).
+double largestDifference(const prism::LoadedImage &a, const prism::LoadedImage &b) {
+    double largest = 0.0;
+    for (size_t i = 0; i < a.pixels.size(); ++i)
+        largest = std::max(largest, double(std::abs(a.pixels[i] - b.pixels[i])));
+    return largest;
+}
+
 class PrismViewXvfb : public ::testing::Test {
 protected:
     void SetUp() override {
@@ -95,10 +103,7 @@ TEST_F(PrismViewXvfb, ScriptedRunWithResizesMatchesPrismRender) {
     // Same shader, specialization, rays and summation order: the images should be bit-identical.
     // The tolerance (1e-6, far below one 8-bit step of 1/255) only forgives a driver that
     // reorders float additions; any sampling or camera mismatch moves pixels by >1e-2.
-    double largest = 0.0;
-    for (size_t i = 0; i < a.pixels.size(); ++i)
-        largest = std::max(largest, double(std::abs(a.pixels[i] - b.pixels[i])));
-    EXPECT_LE(largest, 1e-6);
+    EXPECT_LE(largestDifference(a, b), 1e-6);
 
     // The screenshot carries prism-render's metadata.
     int spp = 0;
@@ -132,10 +137,7 @@ TEST_F(PrismViewXvfb, BrokenReloadKeepsTheLastGoodScene) {
     ASSERT_EQ(render.exitCode, 0) << render.out;
     prism::LoadedImage a = prism::readImage(shot), b = prism::readImage(reference);
     ASSERT_EQ(a.pixels.size(), b.pixels.size());
-    double largest = 0.0;
-    for (size_t i = 0; i < a.pixels.size(); ++i)
-        largest = std::max(largest, double(std::abs(a.pixels[i] - b.pixels[i])));
-    EXPECT_LE(largest, 1e-6) << "the good scene stayed on screen";
+    EXPECT_LE(largestDifference(a, b), 1e-6) << "the good scene stayed on screen";
 }
 
 // A reload that changes only a material keeps the grid (no build: the geometry's key is the
@@ -163,10 +165,7 @@ TEST_F(PrismViewXvfb, MaterialEditReloadKeepsTheGrid) {
     ASSERT_EQ(render.exitCode, 0) << render.out;
     prism::LoadedImage a = prism::readImage(shot), b = prism::readImage(reference);
     ASSERT_EQ(a.pixels.size(), b.pixels.size());
-    double largest = 0.0;
-    for (size_t i = 0; i < a.pixels.size(); ++i)
-        largest = std::max(largest, double(std::abs(a.pixels[i] - b.pixels[i])));
-    EXPECT_LE(largest, 1e-6) << "the edited material is shown, with the kept grid";
+    EXPECT_LE(largestDifference(a, b), 1e-6) << "the edited material is shown, with the kept grid";
 
     CliResult move = run(
         underXvfb((dir_ / "red.scene").string() +
