@@ -80,10 +80,15 @@ bool intersectId(const Scene &scene, const Grid &grid, const PrimitiveIds &ids, 
 
 WalkCounts countWalks(const Scene &scene, const Grid &grid, double aspect, int columns,
                       double stopAboveTestsPerRay) {
+    return countWalks(scene, scene.camera, grid, aspect, columns, stopAboveTestsPerRay);
+}
+
+WalkCounts countWalks(const Scene &scene, const Camera &camera, const Grid &grid, double aspect,
+                      int columns, double stopAboveTestsPerRay) {
     PrimitiveIds ids(scene);
     // A frame of the lattice's own size: its pixel centres are the rays.
     int width = columns, height = std::max(1, int(double(columns) / aspect + 0.5));
-    CameraFrame frame = makeCameraFrame(scene.camera, width, height);
+    CameraFrame frame = makeCameraFrame(camera, width, height);
     WalkCounts counts;
     Tally tally;
     double stopAbove = stopAboveTestsPerRay * double(width) * double(height);

@@ -24,5 +24,9 @@ struct WalkCounts {
 // all a comparison needs.
 WalkCounts countWalks(const Scene &scene, const Grid &grid, double aspect, int columns = 48,
                       double stopAboveTestsPerRay = std::numeric_limits<double>::infinity());
+// The same for `camera` (an animated scene's frame) instead of the scene's own.
+WalkCounts countWalks(const Scene &scene, const Camera &camera, const Grid &grid, double aspect,
+                      int columns = 48,
+                      double stopAboveTestsPerRay = std::numeric_limits<double>::infinity());
 
 } // namespace prism

@@ -113,7 +113,8 @@ RenderedImage renderReference(const Scene &given, const RenderSettings &settings
     image.rgba.resize(pixels);
     image.depth.resize(pixels);
     image.normal.resize(pixels);
-    CameraFrame frame = makeCameraFrame(scene.camera, settings.width, settings.height);
+    CameraFrame frame = makeCameraFrame(settings.camera.value_or(scene.camera), settings.width,
+                                        settings.height);
 
     // Workers take rows from a shared counter; every pixel depends only on its own indices, so
     // the image is the same whatever thread renders which row.

@@ -3,6 +3,7 @@
 // primitive (no grid), on all cores. Ground truth for the shader's images, ray counts and AOVs.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -18,6 +19,7 @@ struct RenderSettings {
     int height = 768;
     uint32_t samplesPerPixel = 1;
     uint32_t maxDepth = 5; // 1 = primary and shadow rays only
+    std::optional<Camera> camera; // an animated scene's frame (camera_animation.h); else its own
 };
 
 struct RenderedImage {

@@ -2,6 +2,7 @@
 // The scene model every part of Prism shares: what a .scene file (and the OBJ files it names)
 // describes, after parsing, defaults and mesh transforms. No Vulkan here.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -108,11 +109,40 @@ struct Instance {
     glm::dvec3 toWorld(const glm::dvec3 &p) const { return translation + scale * (rotation * p); }
 };
 
+// Camera animation (format 1.2, docs/scene-format.md, "Animation"). The `camera` line is the
+// camera at frame 1; each `key` line under it gives the camera at a later frame, changing only
+// the fields it names. Frames are numbers (a renderer's frame numbers, or any real in between).
+struct CameraKey {
+    double frame = 1.0;
+    Camera camera;
+    int line = 0; // the `key` line (0: the camera line's own key at frame 1)
+};
+
+enum class KeyInterpolation { Linear, CatmullRom };
+
+// `turntable FRAMES`: the camera orbits `center` about `axis` by `degrees` every `frames` frames,
+// frame 1 being the camera line itself.
+struct Turntable {
+    double frames = 1.0;
+    glm::dvec3 center{0.0};
+    glm::dvec3 axis{0.0, 1.0, 0.0}; // unit length
+    double degrees = 360.0;
+    int line = 0;
+};
+
+struct CameraAnimation {
+    std::vector<CameraKey> keys; // after frame 1, frames increasing; empty without `key` lines
+    std::optional<Turntable> turntable;
+    KeyInterpolation interpolation = KeyInterpolation::Linear;
+    bool animated() const { return !keys.empty() || turntable.has_value(); }
+};
+
 struct Scene {
     // Where this scene's coordinate origin lies in its file's coordinates: 0 as loaded, the
     // camera's eye once centred for rendering (scene/scene_origin.h).
     glm::dvec3 origin{0.0};
-    Camera camera;
+    Camera camera; // at frame 1 (cameraAt in scene/camera_animation.h gives any frame's)
+    CameraAnimation cameraAnimation;
     glm::vec3 background{0.0f};
     Environment environment;
     glm::vec3 ambient{1.0f};

@@ -1,9 +1,12 @@
-// One handler per .scene directive (format v1.1, docs/scene-format.md).
+// One handler per .scene directive (format v1.2, docs/scene-format.md); the animation
+// directives are in animation_directives.cpp.
 #include "scene/scene_parser.h"
 
 #include "core/error.h"
+#include "scene/animation_directives.h"
 #include "scene/diagnostics.h"
 #include "scene/directive_args.h"
+#include "scene/directive_values.h"
 #include "scene/mesh_importer.h"
 #include "scene/number_parser.h"
 #include "scene/obj_loader.h"
@@ -14,37 +17,6 @@
 
 namespace prism {
 namespace {
-
-using Values = std::vector<const Token *>;
-
-// The value of a parsed number token, or the line's error saying what is wrong with it.
-template <typename Parsed> auto valueOf(const Parsed &parsed, const Token *token) {
-    if (!parsed.ok())
-        throw LineError(describeBadNumber(token->text, parsed.problem));
-    return parsed.value;
-}
-
-float number(const Token *token) {
-    return valueOf(parseFloat(token->text), token);
-}
-
-double coordinate(const Token *token) {
-    return valueOf(parseDouble(token->text), token);
-}
-
-glm::vec3 vec3At(const Values &values, size_t first = 0) {
-    return {number(values[first]), number(values[first + 1]), number(values[first + 2])};
-}
-
-// Positions keep double precision (scene/scene_origin.h says why).
-glm::dvec3 pointAt(const Values &values, size_t first = 0) {
-    return {coordinate(values[first]), coordinate(values[first + 1]),
-            coordinate(values[first + 2])};
-}
-
-std::string formatted(glm::dvec3 v) {
-    return formatNumber(v.x) + " " + formatNumber(v.y) + " " + formatNumber(v.z);
-}
 
 float nonNegative(std::string_view what, float value) {
     if (value < 0.0f)
@@ -120,14 +92,7 @@ void camera(SceneBuilder &builder, const DirectiveArgs &args) {
             throw LineError("camera ortho height must be > 0, got " +
                             formatNumber(camera.orthoHeight));
     }
-    if (camera.eye == camera.look)
-        throw LineError("camera eye and look must differ");
-    glm::dvec3 forward = glm::normalize(camera.look - camera.eye);
-    glm::dvec3 up(camera.up);
-    // sin(angle between up and the view direction) below 1e-6 leaves no usable right vector.
-    if (glm::length(glm::cross(forward, up)) <= 1e-6 * glm::length(up))
-        throw LineError("camera up " + formatted(camera.up) +
-                        " must not be zero or parallel to the view direction");
+    checkCameraView(camera, "camera");
     builder.scene.camera = camera;
     builder.cameraLine = builder.line;
 }
@@ -500,6 +465,9 @@ const std::map<std::string_view, Directive> &directives() {
            2,
            {{"scale", 1}, {"rotate", 2, true}, {"translate", 3}}},
           place}},
+        {"key", {kKeySpec, cameraKey}},
+        {"turntable", {kTurntableSpec, turntable}},
+        {"interpolate", {kInterpolateSpec, interpolate}},
     };
     return table;
 }
@@ -513,6 +481,7 @@ void applyDirective(SceneBuilder &builder, std::span<const Token> tokens) {
         throw LineError("unknown directive '" + keyword.text + "'");
     const Directive &directive = found->second;
     directive.apply(builder, splitDirectiveArgs(directive.spec, tokens.subspan(1)));
+    builder.previousKeyword = directive.spec.keyword; // what a following `key` animates
 }
 
 } // namespace prism

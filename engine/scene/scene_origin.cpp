@@ -8,6 +8,12 @@ void moveOrigin(Scene &scene, glm::dvec3 point) {
     scene.origin += point;
     scene.camera.eye -= point;
     scene.camera.look -= point;
+    for (CameraKey &k : scene.cameraAnimation.keys) {
+        k.camera.eye -= point;
+        k.camera.look -= point;
+    }
+    if (scene.cameraAnimation.turntable)
+        scene.cameraAnimation.turntable->center -= point;
     for (Light &l : scene.lights)
         l.position -= point;
     for (Sphere &s : scene.spheres)
@@ -41,6 +47,10 @@ void centerOn(Scene &scene, glm::dvec3 point) {
     moveOrigin(scene, point);
     scene.camera.eye = asFloat(scene.camera.eye);
     scene.camera.look = asFloat(scene.camera.look);
+    for (CameraKey &k : scene.cameraAnimation.keys) { // as the camera line's own key
+        k.camera.eye = asFloat(k.camera.eye);
+        k.camera.look = asFloat(k.camera.look);
+    }
     for (Light &l : scene.lights)
         l.position = asFloat(l.position);
     for (Sphere &s : scene.spheres)

@@ -24,7 +24,10 @@ void moveOrigin(Scene &scene, glm::dvec3 point);
 // the uncentred scene (as prism-view keeps it), not from a centred one.
 void centerOn(Scene &scene, glm::dvec3 point);
 
-// centerOn(scene, scene.camera.eye): what every renderer does to a loaded scene.
+// centerOn(scene, scene.camera.eye): what every renderer does to a loaded scene. An animated
+// scene is centred on its frame-1 eye whatever frames are rendered, so that a frame is the same
+// image in any range, chunk or tile of a farm (scene/camera_animation.h gives the other frames'
+// cameras in the centred coordinates).
 void centerOnCamera(Scene &scene);
 
 // True when a camera that flew to `eye` is far enough from the scene's origin that floats

@@ -39,6 +39,8 @@ struct SceneBuilder {
     uint32_t currentMaterial = 0;
     int cameraLine = 0;                   // 0 until a camera line
     int environmentLine = 0;              // 0 until an environment line
+    int turntableLine = 0, interpolateLine = 0; // 0 until such a line
+    std::string_view previousKeyword;           // of the last directive, for `key`
     std::vector<glm::dvec3> faceVertices; // this file's `v` lines, for `f`
     std::unordered_map<std::string, PrototypeEntry> prototypeByName;
     uint64_t prototypeTriangles = 0; // in all of Scene::prototypes

@@ -34,6 +34,8 @@ ImageMetadata renderMetadata(const RenderRecord &r) {
                    {"prism:mraysPerSecond", float(r.mraysPerSecond)}};
     meta.ints = {{"prism:samplesPerPixel", int(r.samplesPerPixel)},
                  {"prism:maxDepth", int(r.maxDepth)}};
+    if (r.frame >= 0)
+        meta.ints.emplace_back("prism:frame", r.frame);
     return meta;
 }
 

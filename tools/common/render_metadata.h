@@ -30,6 +30,7 @@ struct RenderRecord {
     double mraysPerSecond = 0.0;
     uint32_t samplesPerPixel = 1;
     uint32_t maxDepth = 5;
+    int frame = -1; // the animation frame (prism:frame), written when >= 0: --frames renders
 };
 
 ImageMetadata renderMetadata(const RenderRecord &record);

@@ -13,22 +13,29 @@ public:
     explicit ProgressLine(bool enabled) : enabled_(enabled) {}
     ~ProgressLine() { finish(); }
 
-    void update(const std::string &label, double fraction) {
+    // "LABEL NN%AFTER": `after` says more of the whole (", 1m20s left").
+    void update(const std::string &label, double fraction, const std::string &after = {}) {
         if (!enabled_ || timer_.elapsedMs() < 1000.0)
             return;
-        std::fprintf(stderr, "\rprism-render: %s %3d%%", label.c_str(), int(fraction * 100.0));
+        std::string text = label + " " + std::to_string(int(fraction * 100.0)) + "%" + after;
+        // Blanks over whatever a longer line before left behind.
+        size_t pad = text.size() < shownLength_ ? shownLength_ - text.size() : 0;
+        std::fprintf(stderr, "\rprism-render: %s%*s", text.c_str(), int(pad), "");
         std::fflush(stderr);
+        shownLength_ = text.size();
         shown_ = true;
     }
     void finish() {
         if (shown_)
             std::fprintf(stderr, "\n");
         shown_ = false;
+        shownLength_ = 0;
     }
 
 private:
     bool enabled_;
     bool shown_ = false;
+    size_t shownLength_ = 0;
     Timer timer_;
 };
 

@@ -6,6 +6,7 @@
 
 #include "cache/disk_cache.h"
 #include "core/error.h"
+#include "frame_range.h"
 #include "size_option.h"
 #include "tool_environment.h"
 
@@ -44,8 +45,19 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
     app.set_version_flag("--version", "prism-render 0.1.0");
     std::string scene, output, size = "1024x768", aov, backend = "vulkan";
     app.add_option("SCENE", scene, "Scene file (format: docs/scene-format.md)")->required();
-    app.add_option("-o,--output", output, "Output image: .exr (float RGBA + AOVs) or .png")
+    app.add_option("-o,--output", output,
+                   "Output image: .exr (float RGBA + AOVs) or .png; with --frames, a pattern "
+                   "whose #### (the frame, zero-padded to the run of #) or {frame} names each "
+                   "frame's file")
         ->required();
+    std::string frames;
+    CLI::Option *framesOption = app.add_option("--frames", frames,
+                   "Render these frames of the scene's animation in one process (the scene "
+                   "loaded, its grid built and the tracer compiled once): N, A-B, A-B:STEP or a "
+                   "comma-separated list of them, e.g. 1-240 or 1,5,10-20");
+    app.add_flag("--skip-existing", options.skipExisting,
+                 "Leave out frames whose output file exists (images are written whole or not at "
+                 "all, so an existing file is a finished frame): resumes a stopped range");
     app.add_option("--size", size, "Image size WxH")->default_val("1024x768");
     app.add_option("--spp", options.samplesPerPixel,
                    "Samples per pixel (stratified anti-aliasing, soft shadows)")
@@ -123,6 +135,18 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
         throw Error("--cache and --no-cache cannot be given together");
     options.cacheDir =
         cacheDir.empty() ? DiskCache::defaultDirectory() : std::filesystem::path(cacheDir);
+    if (framesOption->count() > 0) {
+        options.frames = parseFrameList(frames);
+        if (options.frames.size() > 1 && !hasFrameField(output))
+            throw Error("output " + output + " names no frame, but --frames gives " +
+                        std::to_string(options.frames.size()) +
+                        "; put #### or {frame} in it (e.g. out/shot.####.exr)");
+        hasFrameField(output); // an ambiguous pattern is an error even for one frame
+        if (options.repeat > 1 && options.frames.size() > 1)
+            throw Error("--repeat times one frame over and over; give --frames a single frame "
+                        "with it, not " +
+                        std::to_string(options.frames.size()));
+    }
     options.validation = validationWanted(options.validation);
     options.commandLine = commandLineText(argc, argv);
     return true;

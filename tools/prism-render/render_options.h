@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "accel/grid.h"
 
@@ -12,7 +13,9 @@ enum class Backend { Vulkan, Cpu };
 
 struct RenderOptions {
     std::filesystem::path scenePath;
-    std::filesystem::path outputPath;
+    std::filesystem::path outputPath; // with --frames, a pattern (tools/common/frame_range.h)
+    std::vector<int> frames;          // --frames; empty: one still (frame 1)
+    bool skipExisting = false;        // leave out frames whose output exists
     uint32_t width = 1024, height = 768;
     uint32_t samplesPerPixel = 1;
     uint32_t maxDepth = 5;

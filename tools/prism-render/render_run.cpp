@@ -1,11 +1,10 @@
 #include "render_run.h"
 
 #include <algorithm>
-#include <array>
 #include <cstdio>
-#include <future>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -17,175 +16,79 @@
 #include "core/error.h"
 #include "core/median.h"
 #include "core/timer.h"
-#include "io/image_writer.h"
+#include "frame_range.h"
+#include "frame_sources.h"
+#include "io/image_write_queue.h"
 #include "io/staged_file.h"
 #include "progress_line.h"
-#include "reference/reference_renderer.h"
-#include "render/ray_tracer.h"
 #include "render_metadata.h"
+#include "scene/camera_animation.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_origin.h"
-#include "tile_tint.h"
-#include "vk/context.h"
 
 namespace prism {
 namespace {
 
-// Where a Vulkan render's wall-clock time goes before and after the frames (--stats
-// "phases_ms"), so start-up can be judged: docs/benchmarks.md has cold and warm figures.
-struct VulkanPhases {
-    double contextMs = 0.0;     // waiting for the instance, device and queues (made meanwhile)
-    double contextMadeMs = 0.0; // making them, on their own thread while the scene loads
-    double tracerMs = 0.0;      // scene arrays uploaded, pipeline created for the scene's variant
-    double compileMs = 0.0;     // the untimed 8x8 dispatch: lavapipe compiles the shader there
-    double framesMs = 0.0;      // every frame on the host's clock, waits included
-    double readbackMs = 0.0;    // accumulation (and AOVs) copied back and divided
+// One image of the run: a frame of the scene's animation and the file it goes to.
+struct FrameJob {
+    int frame = 1;
+    std::filesystem::path output;
 };
 
-// What one backend produced: the image and the per-frame timings.
-struct RenderOutcome {
-    OutputImage image;
-    std::vector<double> frameMs;         // timed frames only (after warm-up): GPU timestamps
-    std::vector<double> wallMs;          // the same frames by the host's clock (FrameResult)
-    RayCounts rays;                      // of one frame
-    uint32_t resumeDispatches = 0;       // of the last frame, when traced resumably
-    std::array<uint32_t, 3> tiles{};     // of the last frame: FrameResult::tiles
-    std::vector<ArrayBytes> sceneArrays; // the scene on the device (Vulkan only)
-    std::string device;
-    uint64_t pipelineCacheLoaded = 0, pipelineCacheSaved = 0; // bytes (vk/pipeline_cache.h)
-    VulkanPhases phases;
-};
-
-// The Vulkan instance and device, made on a thread of their own while the scene loads and its
-// grid builds (they need nothing of the scene): 120-180 ms of lavapipe's start-up (loading
-// the driver and LLVM) that no longer adds to the wait (issue 31).
-class ContextInBackground {
-public:
-    ContextInBackground(const RenderOptions &o, const DiskCache *pipelineStore) {
-        vk::ContextOptions options;
-        options.validation = o.validation;
-        options.deviceNameFilter = o.deviceFilter;
-        options.pipelineStore = pipelineStore;
-        made_ = std::async(std::launch::async, [options] {
-            Timer timer;
-            auto context = std::make_unique<vk::Context>(options);
-            return std::pair{std::move(context), timer.elapsedMs()};
+// The run's images: the still (frame 1 at -o), or each --frames frame at its name from the
+// pattern; with --skip-existing, those whose file is not there yet.
+std::vector<FrameJob> frameJobs(const RenderOptions &o, size_t &skipped) {
+    std::vector<FrameJob> jobs;
+    if (o.frames.empty())
+        jobs.push_back({1, o.outputPath});
+    for (int frame : o.frames)
+        jobs.push_back({frame, framePath(o.outputPath.string(), frame)});
+    skipped = 0;
+    if (o.skipExisting)
+        std::erase_if(jobs, [&](const FrameJob &job) {
+            bool exists = std::filesystem::exists(job.output);
+            skipped += exists ? 1 : 0;
+            return exists;
         });
-    }
-    // The context (rethrowing what its creation threw), and how long the caller waited for it.
-    vk::Context &get(double &waitedMs, double &madeMs) {
-        Timer wait;
-        if (!context_) {
-            auto [context, ms] = made_.get();
-            context_ = std::move(context);
-            madeMs = ms;
-        }
-        waitedMs = wait.elapsedMs();
-        return *context_;
-    }
+    return jobs;
+}
 
-private:
-    std::future<std::pair<std::unique_ptr<vk::Context>, double>> made_;
-    std::unique_ptr<vk::Context> context_;
+// "1m05s", "12s", "0.4s": how long a progress line says is left.
+std::string durationText(double seconds) {
+    char text[32];
+    if (seconds < 10.0)
+        std::snprintf(text, sizeof text, "%.1fs", seconds);
+    else if (seconds < 60.0)
+        std::snprintf(text, sizeof text, "%.0fs", seconds);
+    else if (seconds < 3600.0)
+        std::snprintf(text, sizeof text, "%dm%02ds", int(seconds) / 60, int(seconds) % 60);
+    else
+        std::snprintf(text, sizeof text, "%dh%02dm", int(seconds) / 3600, int(seconds) / 60 % 60);
+    return text;
+}
+
+// What each frame of a range cost (--stats "per_frame").
+struct FrameRecord {
+    int frame = 0;
+    std::string output;
+    double traceMs = 0.0, wallMs = 0.0, readbackMs = 0.0, countMs = 0.0;
+    double frameMs = 0.0; // on the host from the frame's start until its image was queued
 };
-
-RenderOutcome renderOnVulkan(const RenderOptions &o, const Scene &scene, const Grid &grid,
-                             ContextInBackground &background) {
-    RenderOutcome out;
-    Timer phase;
-    vk::Context &context = background.get(out.phases.contextMs, out.phases.contextMadeMs);
-
-    TracerOptions tracerOptions;
-    tracerOptions.maxDepth = o.maxDepth;
-    tracerOptions.writeAov = o.aovDepth || o.aovNormal;
-    phase.reset();
-    RayTracer tracer(context, scene, grid, o.width, o.height, tracerOptions);
-    out.phases.tracerMs = phase.elapsedMs();
-
-    out.device = context.deviceName();
-    out.sceneArrays = tracer.sceneArrayBytes();
-    ProgressLine progress(!o.quiet);
-    // lavapipe compiles the shader inside the first dispatch: one 8x8 tile takes that out of
-    // the timed frames. Timing several frames (--repeat) also gets a warm-up frame, so that
-    // they are alike (caches, clocks); a single render does not pay a second frame for that.
-    phase.reset();
-    tracer.compile(scene.camera);
-    out.phases.compileMs = phase.elapsedMs();
-    phase.reset();
-    for (uint32_t frame = o.repeat > 1 ? 0 : 1; frame <= o.repeat; ++frame) {
-        std::string label = frame == 0
-                                ? "warm-up frame"
-                                : "frame " + std::to_string(frame) + "/" + std::to_string(o.repeat);
-        FrameResult result = tracer.renderFrame(scene.camera, frame == 0 ? 1u : o.samplesPerPixel,
-                                                [&](double f) { progress.update(label, f); });
-        // renderFrame traces a frame that overran lavapipe's loop limit again, resumably.
-        out.resumeDispatches = result.resumeDispatches;
-        out.tiles = result.tiles;
-        if (frame > 0) {
-            out.frameMs.push_back(result.gpuMs);
-            out.wallMs.push_back(result.wallMs);
-        }
-        out.rays = result.rays;
-    }
-    progress.finish();
-    out.phases.framesMs = phase.elapsedMs();
-    phase.reset();
-    TracedImage traced = tracer.readback(o.samplesPerPixel);
-    out.phases.readbackMs = phase.elapsedMs();
-    if (context.validationMessageCount() > 0)
-        throw Error(std::to_string(context.validationMessageCount()) +
-                    " Vulkan validation messages (printed above); refusing to write the image");
-    out.pipelineCacheLoaded = context.pipelineCacheLoadedBytes();
-    out.pipelineCacheSaved = context.savePipelineCache();
-    out.image.width = int(traced.width);
-    out.image.height = int(traced.height);
-    out.image.rgba = std::move(traced.rgba);
-    if (o.showTiles)
-        tintTilesByClass(out.image.rgba, traced.width, traced.height, tracer.lastTileClasses());
-    if (o.aovDepth)
-        out.image.depth = std::move(traced.depth);
-    if (o.aovNormal)
-        out.image.normal = std::move(traced.normal);
-    return out;
-}
-
-RenderOutcome renderOnCpu(const RenderOptions &o, const Scene &scene) {
-    RenderSettings settings;
-    settings.width = int(o.width);
-    settings.height = int(o.height);
-    settings.samplesPerPixel = o.samplesPerPixel;
-    settings.maxDepth = o.maxDepth;
-    RenderOutcome out;
-    out.device = "CPU reference (double precision)";
-    ProgressLine progress(!o.quiet);
-    RenderedImage rendered;
-    for (uint32_t frame = 1; frame <= o.repeat; ++frame) {
-        std::string label = "frame " + std::to_string(frame) + "/" + std::to_string(o.repeat);
-        Timer timer;
-        rendered = renderReference(scene, settings, [&](double f) { progress.update(label, f); });
-        out.frameMs.push_back(timer.elapsedMs());
-        out.wallMs.push_back(out.frameMs.back());
-    }
-    progress.finish();
-    out.rays = rendered.rays;
-    out.image.width = rendered.width;
-    out.image.height = rendered.height;
-    out.image.rgba.reserve(rendered.rgba.size() * 4);
-    for (const glm::vec4 &p : rendered.rgba)
-        out.image.rgba.insert(out.image.rgba.end(), {p.r, p.g, p.b, p.a});
-    if (o.aovDepth)
-        out.image.depth = rendered.depth;
-    if (o.aovNormal)
-        for (const glm::vec3 &n : rendered.normal)
-            out.image.normal.insert(out.image.normal.end(), {n.x, n.y, n.z});
-    return out;
-}
 
 } // namespace
 
 void runRender(const RenderOptions &o) {
-    Timer process;               // from here (the command line is parsed) to the image on disk
-    checkCanStage(o.outputPath); // a bad -o fails now, not after the render
+    Timer process; // from here (the command line is parsed) to the last image on disk
+    size_t skipped = 0;
+    std::vector<FrameJob> jobs = frameJobs(o, skipped);
+    if (jobs.empty()) {
+        if (!o.quiet)
+            std::fprintf(stderr, "prism-render: all %zu image%s exist already (--skip-existing)\n",
+                         skipped, skipped == 1 ? "" : "s");
+        return;
+    }
+    for (const FrameJob &job : jobs) // a bad -o fails now, not after the render
+        checkCanStage(job.output);
     // Built grids and the device's pipeline cache are kept here between runs.
     std::optional<DiskCache> cache;
     if (!o.noCache && !o.cacheDir.empty())
@@ -195,7 +98,9 @@ void runRender(const RenderOptions &o) {
         context.emplace(o, cache ? &*cache : nullptr);
     Timer loadTimer;
     Scene scene = loadScene(o.scenePath);
-    centerOnCamera(scene); // both backends trace the same camera-relative scene
+    // Both backends trace the same camera-relative scene; an animation's frames are all
+    // relative to its frame-1 eye (scene_origin.h), so a frame is the same in any range.
+    centerOnCamera(scene);
     double loadMs = loadTimer.elapsedMs();
     if (!o.quiet)
         for (const std::string &warning : scene.warnings)
@@ -207,47 +112,107 @@ void runRender(const RenderOptions &o) {
         buildGridCached(scene, o.grid, GridCachePolicy{cache ? &*cache : nullptr}, &cacheOutcome);
     double buildMs = buildTimer.elapsedMs();
 
-    RenderOutcome out = o.backend == Backend::Cpu ? renderOnCpu(o, scene)
-                                                  : renderOnVulkan(o, scene, grid, *context);
-    double bestMs = *std::min_element(out.frameMs.begin(), out.frameMs.end());
-    double medianMs = median(out.frameMs);
-    double mraysPerSecond = double(out.rays.total()) / (bestMs * 1e3);
+    std::unique_ptr<FrameSource> source;
+    VulkanFrameSource *vulkan = nullptr;
+    if (o.backend == Backend::Cpu) {
+        source = std::make_unique<CpuFrameSource>(o, scene);
+    } else {
+        auto made = std::make_unique<VulkanFrameSource>(o, scene, grid, *context,
+                                                        cameraAt(scene, jobs.front().frame));
+        vulkan = made.get();
+        source = std::move(made);
+    }
 
-    RenderRecord record;
-    record.commandLine = o.commandLine;
-    record.scenePath = o.scenePath.string();
-    record.device = out.device;
-    record.backend = o.backend == Backend::Cpu ? "cpu" : "vulkan";
-    record.gridResolution =
-        o.backend == Backend::Cpu ? std::string("none (brute force)") : gridText(grid);
-    record.rays = out.rays;
-    record.renderTimeMs = bestMs;
-    record.renderTimeMedianMs = medianMs;
-    record.gridBuildMs = buildMs;
-    // The grid's work per primary ray, counted on the CPU for every render; counting stops at
-    // 1,000 tests a ray (under 2M tests, tens of ms, at worst), giving lower bounds.
-    Timer countTimer;
-    WalkCounts walk = countWalks(scene, grid, double(o.width) / double(o.height), 48, 1e3);
-    double countMs = countTimer.elapsedMs();
-    record.gridChoice = grid.choice;
-    record.gridCells = grid.cellCount();
-    record.gridBytes = grid.bytes();
-    record.gridCellsPerPrimaryRay = walk.cellsPerRay;
-    record.gridTestsPerPrimaryRay = walk.testsPerRay;
-    record.mraysPerSecond = mraysPerSecond;
-    record.samplesPerPixel = o.samplesPerPixel;
-    record.maxDepth = o.maxDepth;
-    ImageMetadata meta = renderMetadata(record);
-    Timer writeTimer;
-    writeImage(o.outputPath, out.image, meta);
-    double writeMs = writeTimer.elapsedMs();
+    ImageWriteQueue writer;
+    ProgressLine progress(!o.quiet);
+    std::vector<FrameRecord> frames;
+    std::vector<double> allFrameMs, allWallMs; // every timed frame of the run
+    FrameOutcome last;
+    WalkCounts walk;
+    double framesMs = 0.0, readbackMs = 0.0, countMs = 0.0;
+    bool range = !o.frames.empty();
+    Timer rangeTimer;
+    for (size_t i = 0; i < jobs.size(); ++i) {
+        const FrameJob &job = jobs[i];
+        Timer frameTimer;
+        std::string label = "frame " + std::to_string(i + 1) + "/" + std::to_string(jobs.size());
+        if (range)
+            label += " (" + std::to_string(job.frame) + ")";
+        std::string after; // the frames so far say how long the rest takes
+        if (i > 0)
+            after = ", " +
+                    durationText(rangeTimer.elapsedMs() / 1e3 / double(i) *
+                                 double(jobs.size() - i)) +
+                    " left";
+        Camera camera = cameraAt(scene, job.frame);
+        FrameOutcome out = source->render(camera, label, after, progress);
+        progress.update(label, 1.0, after);
+        // The grid's work per primary ray, counted on the CPU for every image; counting stops
+        // at 1,000 tests a ray (under 2M tests, tens of ms, at worst), giving lower bounds.
+        Timer countTimer;
+        walk = countWalks(scene, camera, grid, double(o.width) / double(o.height), 48, 1e3);
+        double frameCountMs = countTimer.elapsedMs();
+
+        double bestMs = *std::min_element(out.frameMs.begin(), out.frameMs.end());
+        RenderRecord record;
+        record.commandLine = o.commandLine;
+        record.scenePath = o.scenePath.string();
+        record.device = source->device();
+        record.backend = o.backend == Backend::Cpu ? "cpu" : "vulkan";
+        record.gridResolution =
+            o.backend == Backend::Cpu ? std::string("none (brute force)") : gridText(grid);
+        record.rays = out.rays;
+        record.renderTimeMs = bestMs;
+        record.renderTimeMedianMs = median(out.frameMs);
+        record.gridBuildMs = buildMs;
+        record.gridChoice = grid.choice;
+        record.gridCells = grid.cellCount();
+        record.gridBytes = grid.bytes();
+        record.gridCellsPerPrimaryRay = walk.cellsPerRay;
+        record.gridTestsPerPrimaryRay = walk.testsPerRay;
+        record.mraysPerSecond = double(out.rays.total()) / (bestMs * 1e3);
+        record.samplesPerPixel = o.samplesPerPixel;
+        record.maxDepth = o.maxDepth;
+        record.frame = range ? job.frame : -1;
+        writer.push(job.output, std::move(out.image), renderMetadata(record));
+
+        allFrameMs.insert(allFrameMs.end(), out.frameMs.begin(), out.frameMs.end());
+        allWallMs.insert(allWallMs.end(), out.wallMs.begin(), out.wallMs.end());
+        framesMs += out.framesMs;
+        readbackMs += out.readbackMs;
+        countMs += frameCountMs;
+        frames.push_back({job.frame, job.output.string(), bestMs,
+                          *std::min_element(out.wallMs.begin(), out.wallMs.end()), out.readbackMs,
+                          frameCountMs, frameTimer.elapsedMs()});
+        last = std::move(out);
+    }
+    Timer writeWait;
+    writer.finish();
+    double writeWaitMs = writeWait.elapsedMs();
+    progress.finish();
+    // Read what was loaded before saving: a save makes the saved bytes the cache's own.
+    uint64_t pipelineCacheLoaded = vulkan ? vulkan->pipelineCacheLoaded() : 0;
+    uint64_t pipelineCacheSaved = vulkan ? vulkan->savePipelineCache() : 0;
     double processMs = process.elapsedMs();
+    std::vector<double> writeMs = writer.writeMs();
+    if (range && !o.quiet)
+        std::fprintf(stderr,
+                     "prism-render: %zu frame%s in %s (%.0f ms a frame after the first)%s\n",
+                     jobs.size(), jobs.size() == 1 ? "" : "s",
+                     durationText(processMs / 1e3).c_str(),
+                     jobs.size() > 1 ? (rangeTimer.elapsedMs() + writeWaitMs - frames[0].frameMs) /
+                                           double(jobs.size() - 1)
+                                     : frames[0].frameMs,
+                     skipped > 0 ? (", " + std::to_string(skipped) + " skipped: they exist")
+                                       .c_str()
+                                 : "");
 
     if (o.stats) {
+        double bestMs = *std::min_element(allFrameMs.begin(), allFrameMs.end());
         nlohmann::json stats = {
             {"scene", o.scenePath.string()},
             {"backend", o.backend == Backend::Cpu ? "cpu" : "vulkan"},
-            {"device", out.device},
+            {"device", source->device()},
             {"width", o.width},
             {"height", o.height},
             {"spp", o.samplesPerPixel},
@@ -266,29 +231,30 @@ void runRender(const RenderOptions &o) {
             {"load_ms", loadMs},
             {"build_ms", buildMs},
             {"trace_ms", bestMs},
-            {"trace_ms_median", medianMs},
+            {"trace_ms_median", median(allFrameMs)},
             // What a caller waits a frame (the host's share included): the GPU timestamps
             // leave out the host's per-frame work and the queue's own start and end.
-            {"wall_ms", *std::min_element(out.wallMs.begin(), out.wallMs.end())},
-            {"wall_ms_median", median(out.wallMs)},
-            {"frames", out.frameMs.size()},
+            {"wall_ms", *std::min_element(allWallMs.begin(), allWallMs.end())},
+            {"wall_ms_median", median(allWallMs)},
+            {"frames", allFrameMs.size()},
             {"rays",
-             {{"primary", out.rays.primary},
-              {"shadow", out.rays.shadow},
-              {"secondary", out.rays.secondary}}},
-            {"mrays_per_s", mraysPerSecond},
-            {"resume_dispatches", out.resumeDispatches},
+             {{"primary", last.rays.primary},
+              {"shadow", last.rays.shadow},
+              {"secondary", last.rays.secondary}}},
+            {"mrays_per_s", double(last.rays.total()) / (bestMs * 1e3)},
+            {"resume_dispatches", last.resumeDispatches},
             {"grid_cache",
              {{"state", cacheOutcome.state},
               {"key_ms", cacheOutcome.keyMs},
               {"read_ms", cacheOutcome.readMs},
               {"store_ms", cacheOutcome.storeMs}}},
             {"pipeline_cache",
-             {{"loaded_bytes", out.pipelineCacheLoaded}, {"saved_bytes", out.pipelineCacheSaved}}}};
-        if (o.backend == Backend::Vulkan) // which tracer ran each 8x8 tile (render/traced_tiles.h)
-            stats["tiles"] = {{"full", out.tiles[0]},
-                              {"planes_only", out.tiles[1]},
-                              {"background", out.tiles[2]}};
+             {{"loaded_bytes", pipelineCacheLoaded},
+              {"saved_bytes", pipelineCacheSaved}}}};
+        if (vulkan) // which tracer ran each 8x8 tile (render/traced_tiles.h)
+            stats["tiles"] = {{"full", last.tiles[0]},
+                              {"planes_only", last.tiles[1]},
+                              {"background", last.tiles[2]}};
         // Instances: the triangles stored (the scene's and each prototype's once) against the
         // triangles the placements draw.
         uint64_t placedTriangles = 0;
@@ -298,26 +264,48 @@ void runRender(const RenderOptions &o) {
                               {"prototypes", scene.prototypeTriangleCount()},
                               {"instances", scene.instances.size()},
                               {"placed", placedTriangles}};
-        if (!out.sceneArrays.empty()) {
+        if (vulkan) {
             nlohmann::json gpuBytes;
             uint64_t total = 0;
-            for (const ArrayBytes &a : out.sceneArrays) {
+            for (const ArrayBytes &a : vulkan->sceneArrays()) {
                 gpuBytes[a.what] = a.bytes;
                 total += a.bytes;
             }
             gpuBytes["total"] = total;
             stats["scene_gpu_bytes"] = gpuBytes;
         }
+        double writeTotalMs = 0.0;
+        for (double ms : writeMs)
+            writeTotalMs += ms;
         nlohmann::json phases = {{"load", loadMs}, {"build", buildMs}};
-        if (o.backend == Backend::Vulkan)
-            phases.update({{"context", out.phases.contextMs},
-                           {"context_made", out.phases.contextMadeMs},
-                           {"tracer", out.phases.tracerMs},
-                           {"compile", out.phases.compileMs},
-                           {"frames", out.phases.framesMs},
-                           {"readback", out.phases.readbackMs}});
-        phases.update({{"count", countMs}, {"write", writeMs}, {"total", processMs}});
+        if (vulkan)
+            phases.update({{"context", vulkan->phases().contextMs},
+                           {"context_made", vulkan->phases().contextMadeMs},
+                           {"tracer", vulkan->phases().tracerMs},
+                           {"compile", vulkan->phases().compileMs},
+                           {"frames", framesMs},
+                           {"readback", readbackMs}});
+        // write: the images' writes, on their own thread (a range's overlap its next frames);
+        // write_wait: what the run waited for them at its end.
+        phases.update({{"count", countMs},
+                       {"write", writeTotalMs},
+                       {"write_wait", writeWaitMs},
+                       {"total", processMs}});
         stats["phases_ms"] = phases;
+        if (range) {
+            nlohmann::json perFrame = nlohmann::json::array();
+            for (size_t i = 0; i < frames.size(); ++i)
+                perFrame.push_back({{"frame", frames[i].frame},
+                                    {"output", frames[i].output},
+                                    {"trace_ms", frames[i].traceMs},
+                                    {"wall_ms", frames[i].wallMs},
+                                    {"readback_ms", frames[i].readbackMs},
+                                    {"count_ms", frames[i].countMs},
+                                    {"write_ms", i < writeMs.size() ? writeMs[i] : 0.0},
+                                    {"frame_ms", frames[i].frameMs}});
+            stats["per_frame"] = perFrame;
+            stats["skipped"] = skipped;
+        }
         std::printf("%s\n", stats.dump().c_str());
     }
 }
