@@ -314,10 +314,11 @@ void main() {
     if (inside) {
         if (cut)
             radiance = vec3(1.0, 0.0, 1.0); // magenta: the host refuses to save such an image
-        vec4 sum = sampleIndex == 0u ? vec4(0.0) : imageLoad(accumImage, ivec2(pixel));
-        imageStore(accumImage, ivec2(pixel), sum + vec4(radiance, 1.0));
+        ivec2 stored = ivec2(pixel - frameStoreOrigin(frame));
+        vec4 sum = sampleIndex == 0u ? vec4(0.0) : imageLoad(accumImage, stored);
+        imageStore(accumImage, stored, sum + vec4(radiance, 1.0));
         if (WRITE_AOV && sampleIndex == 0u)
-            imageStore(aovImage, ivec2(pixel), aov);
+            imageStore(aovImage, stored, aov);
     }
     // Resumable: a pixel's camera ray counts once, when its sample is finished.
     if (RESUMABLE)

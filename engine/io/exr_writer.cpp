@@ -23,6 +23,13 @@ void writeExr(const std::filesystem::path &file, const OutputImage &image,
     spec.channelnames = names;
     spec.alpha_channel = 3;
     spec.z_channel = image.depth.empty() ? -1 : 4;
+    if (image.fullWidth > 0) { // a part: the data window inside the whole image's
+        spec.x = image.x;
+        spec.y = image.y;
+        spec.full_x = spec.full_y = 0;
+        spec.full_width = image.fullWidth;
+        spec.full_height = image.fullHeight;
+    }
     spec.attribute("compression", "zip"); // lossless: floats come back bit for bit
     addMetadata(spec, meta);
 

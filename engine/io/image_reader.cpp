@@ -27,6 +27,11 @@ LoadedImage readImage(const std::filesystem::path &path) {
     image.width = spec.width;
     image.height = spec.height;
     image.channels = spec.nchannels;
+    // Relative to the display window's corner, which Prism's own images keep at 0, 0.
+    image.x = spec.x - spec.full_x;
+    image.y = spec.y - spec.full_y;
+    image.fullWidth = spec.full_width;
+    image.fullHeight = spec.full_height;
     image.channelNames = spec.channelnames;
     image.metadata = metadataOf(spec);
     image.pixels.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);

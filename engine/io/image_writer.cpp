@@ -33,6 +33,12 @@ void checkShape(const std::filesystem::path &path, const OutputImage &image) {
             fail(path, std::string(what) + " has " + std::to_string(actual) + " values, expected " +
                            std::to_string(pixels * perPixel));
     };
+    if (image.fullWidth > 0 &&
+        (image.x < 0 || image.y < 0 || image.x + image.width > image.fullWidth ||
+         image.y + image.height > image.fullHeight))
+        fail(path, "the part at " + std::to_string(image.x) + "," + std::to_string(image.y) +
+                       " reaches past the whole " + std::to_string(image.fullWidth) + "x" +
+                       std::to_string(image.fullHeight) + " image");
     checkSize("rgba", image.rgba.size(), 4);
     if (!image.depth.empty())
         checkSize("depth", image.depth.size(), 1);

@@ -10,13 +10,19 @@ namespace prism {
 
 struct OutputImage {
     int width = 0, height = 0;
+    // A part of a larger image (a region's render): where it starts in that image, and the
+    // image's size (0: this image is whole). EXR keeps them as the data window inside the
+    // display window; PNG has no such thing and holds the part alone.
+    int x = 0, y = 0;
+    int fullWidth = 0, fullHeight = 0;
     std::vector<float> rgba;   // width*height*4, linear, row 0 = top
     std::vector<float> depth;  // empty or width*height: EXR channel "Z"
     std::vector<float> normal; // empty or width*height*3: EXR channels "N.X", "N.Y", "N.Z"
 };
 
 // By extension (case-insensitive):
-//   .exr  float32 R,G,B,A (+ Z, + N.X N.Y N.Z when present), metadata as header attributes;
+//   .exr  float32 R,G,B,A (+ Z, + N.X N.Y N.Z when present), metadata as header attributes,
+//         a part's place as its data window;
 //   .png  8-bit RGB, sRGB-encoded (clamped, rounded), string metadata as text chunks.
 // Anything else, a malformed image or any I/O failure throws prism::Error naming the path.
 void writeImage(const std::filesystem::path &path, const OutputImage &image,

@@ -1,6 +1,7 @@
 #include "io/staged_file.h"
 
 #include "core/error.h"
+#include "io/temp_file_cleanup.h"
 
 #include <cerrno>
 #include <cstring>
@@ -61,9 +62,10 @@ void checkCanStage(const std::filesystem::path &target) {
 }
 
 StagedFile::StagedFile(std::filesystem::path target)
-    : target_(std::move(target)), temp_(tempPathFor(target_)) {}
+    : target_(std::move(target)), temp_(tempPathFor(target_)), watch_(watchTempFile(temp_)) {}
 
 StagedFile::~StagedFile() {
+    unwatchTempFile(watch_);
     if (!committed_) {
         std::error_code ignored;
         std::filesystem::remove(temp_, ignored);

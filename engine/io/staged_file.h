@@ -1,6 +1,7 @@
 #pragma once
 // Write-then-rename: output goes to a hidden temporary file beside the target, which
-// replaces the target in one rename(2) (atomic on POSIX) only once it is complete.
+// replaces the target in one rename(2) (atomic on POSIX) only once it is complete. A process
+// stopped by SIGTERM, SIGINT or SIGHUP removes its temporary files (io/temp_file_cleanup.h).
 #include <filesystem>
 
 namespace prism {
@@ -25,6 +26,7 @@ private:
     std::filesystem::path target_;
     std::filesystem::path temp_;
     bool committed_ = false;
+    int watch_ = -1; // removed if a signal stops the process first (io/temp_file_cleanup.h)
 };
 
 // Checks, before any work, that `target` can be written the way StagedFile writes it: its

@@ -52,6 +52,8 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     if (features_.profile > 0 && !context.shaderClockEnabled())
         throw Error("profiling needs a Vulkan context created with the shader clock");
     extent_ = sceneExtent(scene, grid, options.maxStartBoxes);
+    region_ = options.region.empty() ? wholeImage(width, height) : options.region;
+    checkPixelBounds(region_, width, height);
     createImages(width, height);
     createPipeline();
     if (options.cullMissTiles)
@@ -147,6 +149,7 @@ void RayTracer::bindImages(vk::ComputePipeline &pipeline) {
 void RayTracer::resize(uint32_t width, uint32_t height) {
     vkDeviceWaitIdle(context_.device()); // no submission may still use the old images
     keptTiles_.params.reset();           // defensive: the new size's parameters differ anyway
+    region_ = wholeImage(width, height);
     createImages(width, height);
     bindImages(*pipeline_);
     if (missPipeline_)
@@ -200,21 +203,27 @@ RayTracer::~RayTracer() {
 void RayTracer::createImages(uint32_t width, uint32_t height) {
     width_ = width;
     height_ = height;
+    window_ = tilesCovering(region_.x0, region_.y0, region_.x1, region_.y1);
+    storeWidth_ = std::min(window_.x1 * kTileSize, width) - window_.x0 * kTileSize;
+    storeHeight_ = std::min(window_.y1 * kTileSize, height) - window_.y0 * kTileSize;
     VkImageUsageFlags usage =
         VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-    accum_ = vk::Image(context_, width, height, VK_FORMAT_R32G32B32A32_SFLOAT, usage);
+    accum_ =
+        vk::Image(context_, storeWidth_, storeHeight_, VK_FORMAT_R32G32B32A32_SFLOAT, usage);
     // Every tile row by row, for the full tracer: what compile()'s one-tile dispatches read.
     TileRect tiles = imageTiles(width, height);
-    VkDeviceSize listBytes = VkDeviceSize(tiles.width()) * tiles.height() * 2 * sizeof(uint32_t);
+    VkDeviceSize listBytes =
+        VkDeviceSize(window_.width()) * window_.height() * 2 * sizeof(uint32_t);
     tileList_ = vk::Buffer(
         context_, listBytes,
         VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
     tileListView_ = vk::BufferView(context_, tileList_.handle(), VK_FORMAT_R32G32_UINT, listBytes);
-    runner_.run([&](VkCommandBuffer commands) { recordTileList(commands, allTiles(tiles)); });
+    runner_.run(
+        [&](VkCommandBuffer commands) { recordTileList(commands, allTiles(tiles, window_)); });
     // The AOV image is full size only when asked for: a scene pays for what it uses.
     bool aov = features_.writeAov;
-    aov_ = vk::Image(context_, aov ? width : 1, aov ? height : 1, VK_FORMAT_R32G32B32A32_SFLOAT,
-                     usage);
+    aov_ = vk::Image(context_, aov ? storeWidth_ : 1, aov ? storeHeight_ : 1,
+                     VK_FORMAT_R32G32B32A32_SFLOAT, usage);
     runner_.run([&](VkCommandBuffer commands) {
         for (const vk::Image *image : {&accum_, &aov_})
             vk::imageBarrier(commands, image->handle(), VK_IMAGE_LAYOUT_UNDEFINED,
@@ -246,6 +255,8 @@ gpu::GpuFrameParams RayTracer::frameParams(const Camera &camera, uint32_t sample
         makeFrameParams(camera, width_, height_, samplesPerPixel, features_.maxDepth);
     params.seedsAndLoops.z = planeCount_;
     params.seedsAndLoops.w = lightCount_;
+    params.du.w = float(window_.x0 * kTileSize); // frameStoreOrigin
+    params.dv.w = float(window_.y0 * kTileSize);
     return params;
 }
 
@@ -269,7 +280,8 @@ const TileLists &RayTracer::frameTiles(const gpu::GpuFrameParams &params, bool r
         std::vector<float> starts;
         if (tileStarts_)
             starts = tileStartDistances(params, extent_.startBoxes);
-        kept.lists = tileLists(kept.classes, imageTiles(width_, height_), starts, dispatchShares_);
+        kept.lists = tileLists(kept.classes, imageTiles(width_, height_), starts, dispatchShares_,
+                               window_);
         kept.params = params;
         ++kept.made;
     }
@@ -400,9 +412,9 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
     result.rays = counted.rays;
     result.loopCutPixels = counted.loopCutPixels;
     result.phaseNs = counted.phaseNs;
-    // Counted from the classes the frame was traced with (FrameResult::tiles' order).
-    for (uint8_t c : lastTileClasses_)
-        result.tiles[c == kTileFull ? 0 : c == kTilePlanesOnly ? 1 : 2] += 1;
+    // Counted from the lists the frame was traced with (FrameResult::tiles' order).
+    result.tiles = {lists.full, lists.traced - lists.full,
+                    uint32_t(lists.tiles.size()) - lists.traced};
     if (result.loopCutPixels > 0) {
         FrameResult resumed = renderResumable(camera, samplesPerPixel, progress); // switches
         resumed.gpuMs += result.gpuMs; // the frame's time includes the pass that was cut
@@ -415,9 +427,13 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
 
 TracedImage RayTracer::readback(uint32_t samplesPerPixel) {
     TracedImage out;
-    out.width = width_;
-    out.height = height_;
-    size_t pixels = size_t(width_) * height_;
+    out.width = region_.width();
+    out.height = region_.height();
+    out.x0 = region_.x0;
+    out.y0 = region_.y0;
+    out.fullWidth = width_;
+    out.fullHeight = height_;
+    size_t pixels = size_t(out.width) * out.height;
     bool withAov = features_.writeAov;
     VkDeviceSize bytes = pixels * 16;
     vk::Buffer colour(context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
@@ -425,7 +441,9 @@ TracedImage RayTracer::readback(uint32_t samplesPerPixel) {
     runner_.run([&](VkCommandBuffer commands) {
         VkBufferImageCopy region{};
         region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {width_, height_, 1};
+        region.imageOffset = {int32_t(region_.x0 - window_.x0 * kTileSize),
+                              int32_t(region_.y0 - window_.y0 * kTileSize), 0};
+        region.imageExtent = {out.width, out.height, 1};
         auto copyOut = [&](const vk::Image &image, VkBuffer target) {
             vk::imageBarrier(commands, image.handle(), VK_IMAGE_LAYOUT_GENERAL,
                              VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,

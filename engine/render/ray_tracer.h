@@ -44,7 +44,9 @@ struct FrameResult {
 };
 
 struct TracedImage {
-    uint32_t width = 0, height = 0;
+    uint32_t width = 0, height = 0; // the region's (TracerOptions::region), else the image's
+    uint32_t x0 = 0, y0 = 0;        // where the region starts in the image
+    uint32_t fullWidth = 0, fullHeight = 0; // the whole image the camera sees
     std::vector<float> rgba;   // mean radiance, alpha 1, row 0 = top
     std::vector<float> depth;  // with writeAov: distance to the hit of the centre ray, +inf miss
     std::vector<float> normal; // with writeAov: xyz per pixel, facing the ray, 0 on a miss
@@ -76,7 +78,8 @@ public:
     FrameResult renderFrame(const Camera &camera, uint32_t samplesPerPixel,
                             const std::function<void(double)> &progress = {});
 
-    // Copies the accumulation (and AOVs) to the host and divides by the sample count.
+    // Copies the accumulation (and AOVs) of the region (TracerOptions::region; else the whole
+    // image) to the host and divides by the sample count.
     TracedImage readback(uint32_t samplesPerPixel);
     // The class of each 8x8 tile (row by row) in the last frame traced (tileClasses): which
     // tracer ran it. Empty before the first frame and after resumable ones (all full there).
@@ -103,8 +106,9 @@ public:
     void recordCounterSnapshot(VkCommandBuffer commands, VkBuffer target) const;
     static VkDeviceSize counterBytes();
     static FrameResult decodeCounters(const void *snapshot); // gpuMs stays 0
-    // New accumulation (and AOV) images of another size; waits for the device to be idle.
-    // Afterwards the accumulation is undefined until sample 0 is traced again.
+    // New accumulation (and AOV) images of another size, for the whole image (a region is
+    // dropped); waits for the device to be idle. Afterwards the accumulation is undefined until
+    // sample 0 is traced again.
     void resize(uint32_t width, uint32_t height);
 
     const vk::Image &accumulation() const { return accum_; }
@@ -113,6 +117,7 @@ public:
     std::vector<ArrayBytes> sceneArrayBytes() const { return arrayBytes(scene_); }
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
+    const PixelRect &region() const { return region_; }
 
 private:
     // One dispatch of groupsX x groupsY 8x8 tiles with `params`, then the barrier that lets the
@@ -142,7 +147,7 @@ private:
     // One dispatch of `pipeline` over entries [first, first + count) of the tile list.
     void recordTiles(VkCommandBuffer commands, const vk::ComputePipeline &pipeline,
                      gpu::GpuFrameParams params, uint32_t first, uint32_t count);
-    // The images and the tile list, sized to the image, and their bindings.
+    // The images and the tile list, sized to the region's tiles (window_), and their bindings.
     void createImages(uint32_t width, uint32_t height);
     void bindImages(vk::ComputePipeline &pipeline);
     // Whether tiles that see only planes may get the tracer without a grid: the scene has
@@ -171,7 +176,12 @@ private:
                               bool resetCounters, FrameResult &result);
 
     vk::Context &context_;
-    uint32_t width_ = 0, height_ = 0;
+    uint32_t width_ = 0, height_ = 0; // the whole image's
+    PixelRect region_;                // what readback returns: the whole image, or a part
+    // The tiles round region_: what the frames trace and the accumulation holds, from the
+    // store origin (window_.x0, window_.y0) * kTileSize on (frameStoreOrigin).
+    TileRect window_;
+    uint32_t storeWidth_ = 0, storeHeight_ = 0; // the accumulation's size
     TracerFeatures features_;
     ArrayLimits limits_;
     vk::CommandRunner runner_;

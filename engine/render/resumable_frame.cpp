@@ -28,7 +28,7 @@ void afterEarlierDispatches(VkCommandBuffer commands) {
 
 void RayTracer::startResuming() {
     vkDeviceWaitIdle(context_.device());
-    resumePlan_ = planResume(width_, height_, features_.maxDepth, lightCount_, features_.writeAov,
+    resumePlan_ = planResume(storeWidth_, storeHeight_, features_.maxDepth, lightCount_, features_.writeAov,
                              resumeMemoryBytes_, features_.has(gpu::kKindInstance),
                              (features_.reflection ? 1u : 0u) + (features_.transmission ? 2u : 0u));
     resumeRecords_ =
@@ -44,8 +44,10 @@ void RayTracer::traceSampleResumably(const Camera &camera, uint32_t sample,
                                      uint32_t samplesPerPixel, bool resetCounters,
                                      FrameResult &result) {
     const ResumePlan &plan = resumePlan_;
-    uint32_t tilesX = (width_ + plan.tileWidth - 1) / plan.tileWidth;
-    uint32_t tilesY = (height_ + plan.tileHeight - 1) / plan.tileHeight;
+    // The plan's tiles over the region's 8x8 tiles (the whole image without a region).
+    uint32_t originX = window_.x0 * kTileSize, originY = window_.y0 * kTileSize;
+    uint32_t tilesX = (storeWidth_ + plan.tileWidth - 1) / plan.tileWidth;
+    uint32_t tilesY = (storeHeight_ + plan.tileHeight - 1) / plan.tileHeight;
     gpu::GpuFrameParams params = frameParams(camera, samplesPerPixel);
     params.control.w = plan.walkLogSize;
     setFrameSample(params, sample);
@@ -53,9 +55,9 @@ void RayTracer::traceSampleResumably(const Camera &camera, uint32_t sample,
     for (uint32_t ty = 0; ty < tilesY; ++ty) {
         for (uint32_t tx = 0; tx < tilesX; ++tx) {
             uint32_t x0 = tx * plan.tileWidth, y0 = ty * plan.tileHeight;
-            params.control.z = x0 | (y0 << 16u);
-            uint32_t groupsX = (std::min(plan.tileWidth, width_ - x0) + 7) / 8;
-            uint32_t groupsY = (std::min(plan.tileHeight, height_ - y0) + 7) / 8;
+            params.control.z = (originX + x0) | ((originY + y0) << 16u);
+            uint32_t groupsX = (std::min(plan.tileWidth, storeWidth_ - x0) + 7) / 8;
+            uint32_t groupsY = (std::min(plan.tileHeight, storeHeight_ - y0) + 7) / 8;
             for (bool fresh = true;; fresh = false) {
                 Timer hostTimer;
                 runner_.run([&](VkCommandBuffer commands) {
@@ -111,8 +113,7 @@ FrameResult RayTracer::renderResumable(const Camera &camera, uint32_t samplesPer
     FrameResult counted = decodeCounters(stats_.mapped());
     result.rays = counted.rays;
     result.loopCutPixels = counted.loopCutPixels;
-    TileRect image = imageTiles(width_, height_);
-    result.tiles = {image.width() * image.height(), 0u, 0u};
+    result.tiles = {window_.width() * window_.height(), 0u, 0u};
     lastTileClasses_.clear();
     return result;
 }

@@ -441,29 +441,32 @@ std::vector<uint32_t> spreadRowOrder(uint32_t rows, uint32_t shares) {
 }
 
 TileLists tileLists(const std::vector<uint8_t> &classes, const TileRect &image,
-                    const std::vector<float> &starts, uint32_t shares) {
+                    const std::vector<float> &starts, uint32_t shares, const TileRect &window) {
+    const TileRect &w = window.empty() ? image : window;
     TileLists lists;
-    lists.tiles.reserve(size_t(image.width()) * image.height());
-    lists.starts.reserve(size_t(image.width()) * image.height());
-    std::vector<uint32_t> rows = spreadRowOrder(image.y1, shares);
+    lists.tiles.reserve(size_t(w.width()) * w.height());
+    lists.starts.reserve(size_t(w.width()) * w.height());
+    std::vector<uint32_t> rows = spreadRowOrder(w.height(), shares);
+    std::array<uint32_t, 3> counts{};
     for (uint8_t wanted : {kTileFull, kTilePlanesOnly, kTileBackground})
-        for (uint32_t ty : rows)
-            for (uint32_t tx = 0; tx < image.x1; ++tx) {
+        for (uint32_t row : rows)
+            for (uint32_t tx = w.x0; tx < w.x1; ++tx) {
+                uint32_t ty = w.y0 + row;
                 size_t i = size_t(ty) * image.x1 + tx;
                 if (classes[i] == wanted) {
                     lists.tiles.push_back(packTile(tx, ty));
                     lists.starts.push_back(starts.empty() ? 0.0f : starts[i]);
+                    counts[wanted] += 1;
                 }
             }
-    lists.full = uint32_t(std::count(classes.begin(), classes.end(), kTileFull));
-    lists.traced =
-        lists.full + uint32_t(std::count(classes.begin(), classes.end(), kTilePlanesOnly));
+    lists.full = counts[kTileFull];
+    lists.traced = lists.full + counts[kTilePlanesOnly];
     return lists;
 }
 
-TileLists allTiles(const TileRect &image) {
+TileLists allTiles(const TileRect &image, const TileRect &window) {
     return tileLists(std::vector<uint8_t>(size_t(image.width()) * image.height(), kTileFull),
-                     image);
+                     image, {}, 0, window);
 }
 
 } // namespace prism

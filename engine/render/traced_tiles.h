@@ -116,10 +116,18 @@ struct TileLists {
     uint32_t full = 0;
     uint32_t traced = 0;
 };
+// `classes` and `starts` are per tile of `image`; only the tiles inside `window` are listed
+// (a region's render, render/image_region.h; empty: every tile).
 TileLists tileLists(const std::vector<uint8_t> &classes, const TileRect &image,
-                    const std::vector<float> &starts = {}, uint32_t shares = 0);
-// Every tile of `image` for the full tracer (culling off).
-TileLists allTiles(const TileRect &image);
+                    const std::vector<float> &starts = {}, uint32_t shares = 0,
+                    const TileRect &window = {});
+// Every tile of `image` (inside `window`, where given) for the full tracer (culling off).
+TileLists allTiles(const TileRect &image, const TileRect &window = {});
+// The tiles that hold some pixel of [x0, x1) x [y0, y1).
+inline TileRect tilesCovering(uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1) {
+    return {x0 / kTileSize, y0 / kTileSize, (x1 + kTileSize - 1) / kTileSize,
+            (y1 + kTileSize - 1) / kTileSize};
+}
 // 0 .. rows - 1 for a dispatch that `shares` threads split into contiguous shares: with
 // shares > 0, the rows r = s (mod shares) in order for s = 0, 1, ... (0, 2, 4, 6, 1, 3, 5, 7 for
 // 8 rows and 2); with 0 (unknown), the order of their bit-reversed indices (0, 4, 2, 6, 1, 5,

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "accel/grid.h"
+#include "render/image_region.h"
 #include "render/traced_tiles.h"
 #include "scene/scene.h"
 #include "vk/descriptor_set.h"
@@ -14,6 +15,9 @@ namespace prism {
 
 struct TracerOptions {
     uint32_t maxDepth = 5;
+    // The pixels to trace (render/image_region.h); empty: the whole image. The accumulation
+    // and AOV images hold only the 8x8 tiles round them.
+    PixelRect region;
     bool writeAov = false;
     bool shadows = true;
     bool reflection = true;   // false: off even where materials reflect (feature-cost study)

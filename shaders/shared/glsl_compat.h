@@ -10,6 +10,7 @@ using vec2 = glm::vec2;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using ivec3 = glm::ivec3;
+using uvec2 = glm::uvec2;
 using uvec4 = glm::uvec4;
 } // namespace prism::gpu
 #define PRISM_NAMESPACE_BEGIN namespace prism::gpu {

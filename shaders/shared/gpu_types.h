@@ -275,8 +275,8 @@ struct GpuStats {
 struct GpuFrameParams {
     vec4 eye;     // xyz: camera position; w: 1 for parallel projection
     vec4 forward; // xyz: unit view direction
-    vec4 du;      // right scaled by h*a (perspective) or (H/2)*a (ortho)
-    vec4 dv;      // true up scaled by h (perspective) or H/2 (ortho)
+    vec4 du;      // xyz: right scaled by h*a (perspective) or (H/2)*a (ortho); w: store origin x
+    vec4 dv;      // xyz: true up scaled by h (perspective) or H/2 (ortho); w: store origin y
     uvec4 image;  // x width, y height, z this dispatch's sample index, w samples per pixel
     // x: max depth, y: kLoopProbeRuns. Resumable tracing: z the tile origin x | y << 16, w the
     // walk log size; otherwise z, w: the dispatch's range of the frame's tile list.
@@ -300,6 +300,12 @@ PRISM_INLINE uint frameLightCount(PRISM_IN(GpuFrameParams) f) {
 }
 PRISM_INLINE bool isParallelCamera(PRISM_IN(GpuFrameParams) f) {
     return f.eye.w != 0.0f;
+}
+// Where the accumulation and AOV images start in the image: a region's render (render/
+// image_region.h) holds only the tiles round it. Carried in du.w and dv.w, which the camera does
+// not use (push constants are full at 128 bytes), as floats: exact below 2^24 pixels.
+PRISM_INLINE uvec2 frameStoreOrigin(PRISM_IN(GpuFrameParams) f) {
+    return uvec2(uint(f.du.w), uint(f.dv.w));
 }
 PRISM_INLINE uint frameSampleIndex(PRISM_IN(GpuFrameParams) f) {
     return f.image.z;

@@ -119,4 +119,12 @@ std::string framePath(const std::string &pattern, int frame) {
     return pattern.substr(0, run.start) + number + pattern.substr(run.start + run.length);
 }
 
+std::string tilePath(const std::string &pattern, int tile) {
+    std::string out = pattern;
+    const std::string field = "{tile}";
+    for (size_t at = out.find(field); at != std::string::npos; at = out.find(field, at))
+        out.replace(at, field.size(), std::to_string(tile));
+    return out;
+}
+
 } // namespace prism

@@ -22,4 +22,7 @@ bool hasFrameField(const std::string &pattern);
 // A pattern without a field is returned as it is.
 std::string framePath(const std::string &pattern, int frame);
 
+// `pattern` with each `{tile}` replaced by `tile` (prism-render --tile I/N: I); as it is without.
+std::string tilePath(const std::string &pattern, int tile);
+
 } // namespace prism

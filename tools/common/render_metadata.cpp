@@ -36,6 +36,10 @@ ImageMetadata renderMetadata(const RenderRecord &r) {
                  {"prism:maxDepth", int(r.maxDepth)}};
     if (r.frame >= 0)
         meta.ints.emplace_back("prism:frame", r.frame);
+    if (!r.region.empty())
+        meta.strings.emplace_back("prism:region", r.region);
+    if (!r.tile.empty())
+        meta.strings.emplace_back("prism:tile", r.tile);
     return meta;
 }
 

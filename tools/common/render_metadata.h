@@ -31,6 +31,9 @@ struct RenderRecord {
     uint32_t samplesPerPixel = 1;
     uint32_t maxDepth = 5;
     int frame = -1; // the animation frame (prism:frame), written when >= 0: --frames renders
+    // A part of the image (prism:region "x0,x1,y0,y1" in pixels, render/image_region.h) and
+    // the tile it is (prism:tile "I/N"), written when not empty.
+    std::string region, tile;
 };
 
 ImageMetadata renderMetadata(const RenderRecord &record);

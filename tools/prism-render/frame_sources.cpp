@@ -6,6 +6,38 @@
 #include "tile_tint.h"
 
 namespace prism {
+namespace {
+
+// A region's image says where it lies in the whole (an EXR's data window).
+void placeRegion(OutputImage &image, const RenderOptions &o) {
+    if (o.region.empty())
+        return;
+    image.x = int(o.region.x0);
+    image.y = int(o.region.y0);
+    image.fullWidth = int(o.width);
+    image.fullHeight = int(o.height);
+}
+
+// The pixels of `r` in a whole image, every channel.
+OutputImage cutRegion(const OutputImage &whole, const PixelRect &r) {
+    OutputImage part;
+    part.width = int(r.width());
+    part.height = int(r.height());
+    auto cut = [&](const std::vector<float> &from, std::vector<float> &to, size_t channels) {
+        if (from.empty())
+            return;
+        for (uint32_t y = r.y0; y < r.y1; ++y) {
+            auto row = from.begin() + std::ptrdiff_t((size_t(y) * whole.width + r.x0) * channels);
+            to.insert(to.end(), row, row + std::ptrdiff_t(r.width() * channels));
+        }
+    };
+    cut(whole.rgba, part.rgba, 4);
+    cut(whole.depth, part.depth, 1);
+    cut(whole.normal, part.normal, 3);
+    return part;
+}
+
+} // namespace
 
 ContextInBackground::ContextInBackground(const RenderOptions &o, const DiskCache *pipelineStore) {
     vk::ContextOptions options;
@@ -37,6 +69,7 @@ VulkanFrameSource::VulkanFrameSource(const RenderOptions &o, const Scene &scene,
     TracerOptions tracerOptions;
     tracerOptions.maxDepth = o.maxDepth;
     tracerOptions.writeAov = o.aovDepth || o.aovNormal;
+    tracerOptions.region = o.region;
     Timer phase;
     tracer_ = std::make_unique<RayTracer>(*context_, scene, grid, o.width, o.height, tracerOptions);
     phases_.tracerMs = phase.elapsedMs();
@@ -82,11 +115,15 @@ FrameOutcome VulkanFrameSource::render(const Camera &camera, const std::string &
     out.image.height = int(traced.height);
     out.image.rgba = std::move(traced.rgba);
     if (o_.showTiles)
-        tintTilesByClass(out.image.rgba, traced.width, traced.height, tracer_->lastTileClasses());
+        tintTilesByClass(out.image.rgba, wholeImage(traced.fullWidth, traced.fullHeight),
+                         PixelRect{traced.x0, traced.y0, traced.x0 + traced.width,
+                                   traced.y0 + traced.height},
+                         tracer_->lastTileClasses());
     if (o_.aovDepth)
         out.image.depth = std::move(traced.depth);
     if (o_.aovNormal)
         out.image.normal = std::move(traced.normal);
+    placeRegion(out.image, o_);
     return out;
 }
 
@@ -122,6 +159,11 @@ FrameOutcome CpuFrameSource::render(const Camera &camera, const std::string &lab
     if (o_.aovNormal)
         for (const glm::vec3 &n : rendered.normal)
             out.image.normal.insert(out.image.normal.end(), {n.x, n.y, n.z});
+    // The reference traces every pixel on its own: a region is the whole image cut.
+    if (!o_.region.empty()) {
+        out.image = cutRegion(out.image, o_.region);
+        placeRegion(out.image, o_);
+    }
     return out;
 }
 

@@ -1,5 +1,7 @@
 #include "render_options.h"
 
+#include <array>
+#include <cmath>
 #include <cstdlib>
 
 #include <CLI/CLI.hpp>
@@ -7,6 +9,7 @@
 #include "cache/disk_cache.h"
 #include "core/error.h"
 #include "frame_range.h"
+#include "render/image_region.h"
 #include "size_option.h"
 #include "tool_environment.h"
 
@@ -27,6 +30,61 @@ void parseAovs(const std::string &text, RenderOptions &options) {
         if (comma == std::string::npos)
             break;
         start = comma + 1;
+    }
+}
+
+// "A,B,C,D" for --crop and --pixel-bounds; `whole`: each a whole number.
+std::array<double, 4> fourNumbers(const std::string &option, const std::string &text, bool whole) {
+    std::array<double, 4> v{};
+    size_t start = 0;
+    for (int k = 0; k < 4; ++k) {
+        size_t comma = text.find(',', start);
+        if ((k < 3) != (comma != std::string::npos))
+            throw Error(option + " takes four comma-separated numbers X0,X1,Y0,Y1, got \"" + text +
+                        "\"");
+        std::string item = text.substr(start, comma == std::string::npos ? comma : comma - start);
+        char *end = nullptr;
+        v[k] = std::strtod(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || !std::isfinite(v[k]) ||
+            (whole && (v[k] != std::floor(v[k]) || v[k] < 0.0 || v[k] > 1e7)))
+            throw Error(option + ": \"" + item + "\" is not " +
+                        (whole ? "a pixel coordinate (a whole number from 0)" : "a number"));
+        start = comma + 1;
+    }
+    return v;
+}
+
+// "I/N": tile I (from 0) of N.
+void parseTile(const std::string &text, RenderOptions &options) {
+    size_t slash = text.find('/');
+    auto whole = [&](const std::string &item) {
+        if (item.empty() || item.size() > 6 ||
+            item.find_first_not_of("0123456789") != std::string::npos)
+            throw Error("--tile takes I/N (tile I, from 0, of N), got \"" + text + "\"");
+        return uint32_t(std::stoul(item));
+    };
+    if (slash == std::string::npos)
+        throw Error("--tile takes I/N (tile I, from 0, of N), got \"" + text + "\"");
+    options.tileIndex = int(whole(text.substr(0, slash)));
+    options.tileCount = int(whole(text.substr(slash + 1)));
+}
+
+// --crop, --pixel-bounds or --tile as the pixels to render (at most one of them is given).
+void parseRegion(const std::string &crop, const std::string &bounds, const std::string &tile,
+                 RenderOptions &options) {
+    if (int(!crop.empty()) + int(!bounds.empty()) + int(!tile.empty()) > 1)
+        throw Error("give one of --crop, --pixel-bounds and --tile: each picks the region alone");
+    if (!crop.empty()) {
+        std::array<double, 4> f = fourNumbers("--crop", crop, false);
+        options.region = cropWindowPixels(options.width, options.height, f[0], f[1], f[2], f[3]);
+    } else if (!bounds.empty()) {
+        std::array<double, 4> b = fourNumbers("--pixel-bounds", bounds, true);
+        options.region = {uint32_t(b[0]), uint32_t(b[2]), uint32_t(b[1]), uint32_t(b[3])};
+        checkPixelBounds(options.region, options.width, options.height);
+    } else if (!tile.empty()) {
+        parseTile(tile, options);
+        options.region = splitTile(options.width, options.height, uint32_t(options.tileIndex),
+                                   uint32_t(options.tileCount));
     }
 }
 
@@ -59,6 +117,17 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
                  "Leave out frames whose output file exists (images are written whole or not at "
                  "all, so an existing file is a finished frame): resumes a stopped range");
     app.add_option("--size", size, "Image size WxH")->default_val("1024x768");
+    std::string crop, pixelBounds, tile;
+    app.add_option("--crop", crop,
+                   "Render only this part of the image, as fractions X0,X1,Y0,Y1 of its width "
+                   "and height (pbrt's --cropwindow: pixels ceil(W*X0) to ceil(W*X1)); an EXR "
+                   "keeps the part's place as its data window");
+    app.add_option("--pixel-bounds", pixelBounds,
+                   "Render only pixels X0 to X1 (excluded), Y0 to Y1 (excluded) of the image");
+    app.add_option("--tile", tile,
+                   "Render tile I (from 0) of the image split into N tiles on 8-pixel edges, "
+                   "as I/N: a farm task's part of a still (prism-merge puts the tiles "
+                   "together); {tile} in the output name is replaced by I");
     app.add_option("--spp", options.samplesPerPixel,
                    "Samples per pixel (stratified anti-aliasing, soft shadows)")
         ->check(CLI::Range(1u, 65536u))
@@ -147,6 +216,12 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
                         "with it, not " +
                         std::to_string(options.frames.size()));
     }
+    parseRegion(crop, pixelBounds, tile, options);
+    if (options.tileCount > 0 && ext != ".exr")
+        throw Error("--tile needs an .exr output: its data window keeps the tile's place for "
+                    "prism-merge (PNG cannot)");
+    if (output.find("{tile}") != std::string::npos && options.tileCount == 0)
+        throw Error("output " + output + " names a {tile}, but no --tile is given");
     options.validation = validationWanted(options.validation);
     options.commandLine = commandLineText(argc, argv);
     return true;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "accel/grid.h"
+#include "render/image_region.h"
 
 namespace prism {
 
@@ -17,6 +18,10 @@ struct RenderOptions {
     std::vector<int> frames;          // --frames; empty: one still (frame 1)
     bool skipExisting = false;        // leave out frames whose output exists
     uint32_t width = 1024, height = 768;
+    // --crop, --pixel-bounds or --tile: the pixels to render (empty: the whole image).
+    PixelRect region;
+    int tileIndex = -1, tileCount = 0; // --tile I/N
+
     uint32_t samplesPerPixel = 1;
     uint32_t maxDepth = 5;
     GridOptions grid;

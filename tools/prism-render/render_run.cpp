@@ -39,10 +39,12 @@ struct FrameJob {
 // pattern; with --skip-existing, those whose file is not there yet.
 std::vector<FrameJob> frameJobs(const RenderOptions &o, size_t &skipped) {
     std::vector<FrameJob> jobs;
+    std::string pattern =
+        o.tileCount > 0 ? tilePath(o.outputPath.string(), o.tileIndex) : o.outputPath.string();
     if (o.frames.empty())
-        jobs.push_back({1, o.outputPath});
+        jobs.push_back({1, pattern});
     for (int frame : o.frames)
-        jobs.push_back({frame, framePath(o.outputPath.string(), frame)});
+        jobs.push_back({frame, framePath(pattern, frame)});
     skipped = 0;
     if (o.skipExisting)
         std::erase_if(jobs, [&](const FrameJob &job) {
@@ -174,6 +176,10 @@ void runRender(const RenderOptions &o) {
         record.samplesPerPixel = o.samplesPerPixel;
         record.maxDepth = o.maxDepth;
         record.frame = range ? job.frame : -1;
+        if (!o.region.empty())
+            record.region = regionText(o.region);
+        if (o.tileCount > 0)
+            record.tile = std::to_string(o.tileIndex) + "/" + std::to_string(o.tileCount);
         writer.push(job.output, std::move(out.image), renderMetadata(record));
 
         allFrameMs.insert(allFrameMs.end(), out.frameMs.begin(), out.frameMs.end());
@@ -215,6 +221,7 @@ void runRender(const RenderOptions &o) {
             {"device", source->device()},
             {"width", o.width},
             {"height", o.height},
+            {"region", regionText(o.region.empty() ? wholeImage(o.width, o.height) : o.region)},
             {"spp", o.samplesPerPixel},
             {"depth", o.maxDepth},
             {"primitives", scene.finitePrimitiveCount() + scene.planes.size()},

@@ -4,12 +4,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "render/image_region.h"
+
 namespace prism {
 
 // Full tiles stay as rendered; tiles traced without the grid (planes only) are tinted blue,
-// background tiles grey. rgba: width x height RGBA floats, row 0 at the top; classes: one per
-// tile, row by row (RayTracer::lastTileClasses). Does nothing when classes is empty.
-void tintTilesByClass(std::vector<float> &rgba, uint32_t width, uint32_t height,
+// background tiles grey. rgba: the pixels of `part` of `image` (a region's render, or all of
+// it), RGBA floats, row 0 at the top; classes: one per tile of `image`, row by row
+// (RayTracer::lastTileClasses). Does nothing when classes is empty.
+void tintTilesByClass(std::vector<float> &rgba, const PixelRect &image, const PixelRect &part,
                       const std::vector<uint8_t> &classes);
 
 } // namespace prism

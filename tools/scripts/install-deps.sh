@@ -12,6 +12,7 @@ packages=(
     python3-matplotlib python3-numpy python3-openimageio # studies.py and its test
     time # GNU time: first_image.py's peak memory
     libembree-dev # only prism-gridbench's baseline: Prism builds without it
+    slurm-wlm munge parallel # tools/farm: its tests start a local Slurm, and run GNU parallel
     # xauth: xvfb-run (the prism-view tests) needs it; xvfb only recommends it
 )
 missing=()
