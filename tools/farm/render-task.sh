@@ -3,10 +3,12 @@
 # a still, rendered by prism-render. Runs wherever the farm puts it; what it needs is on a
 # filesystem every node shares (the scene, its meshes, the outputs' directory, PRISM_BIN).
 #
-#   render-task.sh frames INDEX SCENE FIRST LAST STEP CHUNK PATTERN [prism-render options...]
-#       frames FIRST + (INDEX*CHUNK + k)*STEP for k = 0..CHUNK-1, up to LAST; written to PATTERN
-#       (#### or {frame}); frames already written are left out (--skip-existing), so a task
-#       that was stopped and runs again finishes its chunk.
+#   render-task.sh frames INDEX SCENE FIRST LAST STEP TASKS PATTERN [prism-render options...]
+#       task INDEX of TASKS takes every TASKS-th frame of FIRST-LAST:STEP from its INDEX-th on
+#       (FIRST + (INDEX + k*TASKS)*STEP up to LAST), so that each task gets views from all over
+#       the range and the tasks cost about the same (a turntable's costly side is not one
+#       task's); written to PATTERN (#### or {frame}); frames already written are left out
+#       (--skip-existing), so a task that was stopped and runs again finishes its share.
 #   render-task.sh tiles INDEX SCENE COUNT PATTERN [prism-render options...]
 #       tile INDEX of COUNT (prism-render --tile), written to PATTERN ({tile} = INDEX), unless
 #       it is there already.
@@ -49,15 +51,15 @@ fi
 
 case $mode in
 frames)
-    [[ $# -ge 5 ]] || die "frames needs FIRST LAST STEP CHUNK PATTERN"
-    first=$1 last=$2 step=$3 chunk=$4 pattern=$5
+    [[ $# -ge 5 ]] || die "frames needs FIRST LAST STEP TASKS PATTERN"
+    first=$1 last=$2 step=$3 tasks=$4 pattern=$5
     shift 5
-    start=$((first + index * chunk * step))
-    end=$((start + (chunk - 1) * step))
-    ((end <= last)) || end=$last
+    ((index < tasks)) || die "task $index of $tasks: tasks are numbered 0-$((tasks - 1))"
+    start=$((first + index * step))
     ((start <= last)) || die "task $index starts past the last frame $last: nothing to render"
-    echo "render-task: frames $start-$end:$step of $scene on $(hostname -s)" >&2
-    exec "$render" "$scene" --frames "$start-$end:$step" --skip-existing -o "$pattern" \
+    frames="$start-$last:$((tasks * step))"
+    echo "render-task: frames $frames of $scene on $(hostname -s)" >&2
+    exec "$render" "$scene" --frames "$frames" --skip-existing -o "$pattern" \
         "${device[@]}" "$@"
     ;;
 tiles)
