@@ -24,7 +24,7 @@
 #include "render_metadata.h"
 #include "scene/camera_animation.h"
 #include "scene/scene_loader.h"
-#include "scene/scene_origin.h"
+#include "session/prepared_scene.h"
 
 namespace prism {
 namespace {
@@ -99,20 +99,17 @@ void runRender(const RenderOptions &o) {
     if (o.backend == Backend::Vulkan)
         context.emplace(o, cache ? &*cache : nullptr);
     Timer loadTimer;
-    Scene scene = loadScene(o.scenePath);
-    // Both backends trace the same camera-relative scene; an animation's frames are all
-    // relative to its frame-1 eye (scene_origin.h), so a frame is the same in any range.
-    centerOnCamera(scene);
+    Scene loaded = loadScene(o.scenePath);
     double loadMs = loadTimer.elapsedMs();
+    // Both backends trace the same camera-relative scene and its grid.
+    PreparedScene prepared = prepareScene(std::move(loaded), o.grid, cache ? &*cache : nullptr);
+    const Scene &scene = prepared.scene;
+    const Grid &grid = prepared.grid;
+    const GridCacheOutcome &cacheOutcome = prepared.gridCache;
+    double buildMs = prepared.buildMs;
     if (!o.quiet)
         for (const std::string &warning : scene.warnings)
             std::fprintf(stderr, "%s\n", warning.c_str());
-
-    Timer buildTimer;
-    GridCacheOutcome cacheOutcome;
-    Grid grid =
-        buildGridCached(scene, o.grid, GridCachePolicy{cache ? &*cache : nullptr}, &cacheOutcome);
-    double buildMs = buildTimer.elapsedMs();
 
     std::unique_ptr<FrameSource> source;
     VulkanFrameSource *vulkan = nullptr;

@@ -13,6 +13,7 @@ packages=(
     time # GNU time: first_image.py's peak memory
     libembree-dev # only prism-gridbench's baseline: Prism builds without it
     slurm-wlm munge parallel # tools/farm: its tests start a local Slurm, and run GNU parallel
+    pybind11-dev python3-dev python3-pytest # python/: `import prism` and its tests
     # xauth: xvfb-run (the prism-view tests) needs it; xvfb only recommends it
 )
 missing=()

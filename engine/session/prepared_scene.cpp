@@ -1,0 +1,29 @@
+#include "session/prepared_scene.h"
+
+#include <utility>
+
+#include "core/timer.h"
+#include "scene/scene_origin.h"
+
+namespace prism {
+
+PreparedScene prepareScene(Scene scene, const GridOptions &options, const DiskCache *cache) {
+    PreparedScene prepared;
+    prepared.scene = std::move(scene);
+    // An animation's frames are all relative to its frame-1 eye, so a frame is the same image
+    // in any range (scene_origin.h).
+    centerOnCamera(prepared.scene);
+    Timer build;
+    prepared.grid = buildGridCached(prepared.scene, options, GridCachePolicy{cache},
+                                    &prepared.gridCache);
+    prepared.buildMs = build.elapsedMs();
+    return prepared;
+}
+
+Camera toSceneCoordinates(const PreparedScene &prepared, Camera camera) {
+    camera.eye -= prepared.scene.origin;
+    camera.look -= prepared.scene.origin;
+    return camera;
+}
+
+} // namespace prism

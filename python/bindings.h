@@ -1,0 +1,25 @@
+#pragma once
+// What the binding files share: the Python-side objects and the registration functions
+// module.cpp calls. Bindings only: the work is the engine's (session/, render/).
+#include <memory>
+
+#include <pybind11/pybind11.h>
+
+#include "scene/scene.h"
+#include "session/prepared_scene.h"
+
+namespace prism::python {
+
+// prism.Scene: a loaded scene, prepared once (centred, its grid built), and the camera the next
+// render uses, kept in the prepared scene's coordinates so that a frame set from Python is the
+// camera prism-render --frames uses, to the bit.
+struct PyScene {
+    std::shared_ptr<const PreparedScene> prepared;
+    Camera camera; // in prepared->scene's (centred) coordinates
+    double frame = 1.0;
+};
+
+void bindScene(pybind11::module_ &m);
+void bindRenderer(pybind11::module_ &m);
+
+} // namespace prism::python

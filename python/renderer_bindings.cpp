@@ -1,0 +1,176 @@
+// prism.Renderer: the Vulkan device, and the tracer of the last scene and settings rendered.
+#include <algorithm>
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bindings.h"
+#include "core/timer.h"
+#include "render/ray_tracer.h"
+#include "vk/context.h"
+
+namespace py = pybind11;
+
+namespace prism::python {
+namespace {
+
+// What a tracer is made for: the scene and everything fixed at its creation.
+struct TracerKey {
+    const PreparedScene *scene = nullptr;
+    uint32_t width = 0, height = 0, depth = 0;
+    bool aov = false;
+    bool operator==(const TracerKey &) const = default;
+};
+
+class PyRenderer {
+public:
+    PyRenderer(const std::optional<std::string> &device, bool validation) {
+        vk::ContextOptions options;
+        options.validation = validation;
+        options.deviceNameFilter = device.value_or("");
+        py::gil_scoped_release released;
+        context_ = std::make_unique<vk::Context>(options);
+    }
+
+    py::dict render(const std::shared_ptr<PyScene> &scene, uint32_t width, uint32_t height,
+                    uint32_t spp, uint32_t depth, const std::vector<std::string> &aovs) {
+        if (width == 0 || height == 0 || width > 16384 || height > 16384)
+            throw py::value_error("width and height must be 1 to 16384, got " +
+                                  std::to_string(width) + "x" + std::to_string(height));
+        if (spp == 0 || spp > 65536)
+            throw py::value_error("spp must be 1 to 65536, got " + std::to_string(spp));
+        if (depth == 0 || depth > 16)
+            throw py::value_error("depth must be 1 to 16, got " + std::to_string(depth));
+        bool rgb = false, z = false, n = false;
+        for (const std::string &a : aovs) {
+            bool &wanted = a == "rgb" ? rgb : a == "z" ? z : n;
+            if (a != "rgb" && a != "z" && a != "n")
+                throw py::value_error("aovs are 'rgb', 'z' and 'n', got '" + a + "'");
+            wanted = true;
+        }
+        TracedImage image;
+        FrameResult frame;
+        double tracerMs = 0.0, readbackMs = 0.0;
+        Camera camera = scene->camera;
+        uint32_t messagesBefore = context_->validationMessageCount();
+        {
+            py::gil_scoped_release released; // Python threads run while this one renders
+            std::lock_guard lock(mutex_);    // one render at a time on this renderer
+            TracerKey key{scene->prepared.get(), width, height, depth, z || n};
+            if (!tracer_ || !(key == key_)) {
+                tracer_.reset(); // the old scene's arrays go before the new ones come
+                Timer made;
+                TracerOptions options;
+                options.maxDepth = depth;
+                options.writeAov = key.aov;
+                tracer_ = std::make_unique<RayTracer>(*context_, scene->prepared->scene,
+                                                      scene->prepared->grid, width, height,
+                                                      options);
+                tracerMs = made.elapsedMs();
+                key_ = key;
+                keptScene_ = scene->prepared; // the tracer's scene stays alive with it
+            }
+            frame = tracer_->renderFrame(camera, spp);
+            Timer readback;
+            image = tracer_->readback(spp);
+            readbackMs = readback.elapsedMs();
+        }
+        if (context_->validationMessageCount() != messagesBefore)
+            throw std::runtime_error(
+                std::to_string(context_->validationMessageCount() - messagesBefore) +
+                " Vulkan validation messages (printed on stderr) during this render");
+        py::dict out;
+        size_t pixels = size_t(width) * height;
+        auto array = [&](size_t channels, auto fill) {
+            py::array_t<float> a({size_t(height), size_t(width), channels});
+            fill(static_cast<float *>(a.mutable_data()));
+            return a;
+        };
+        if (rgb)
+            out["rgb"] = array(3, [&](float *to) {
+                for (size_t i = 0; i < pixels; ++i)
+                    std::memcpy(to + 3 * i, &image.rgba[4 * i], 3 * sizeof(float));
+            });
+        if (z)
+            out["z"] = array(1, [&](float *to) {
+                std::copy(image.depth.begin(), image.depth.end(), to);
+            });
+        if (n)
+            out["n"] = array(3, [&](float *to) {
+                std::copy(image.normal.begin(), image.normal.end(), to);
+            });
+        lastStats_ = py::dict();
+        lastStats_["width"] = width;
+        lastStats_["height"] = height;
+        lastStats_["spp"] = spp;
+        lastStats_["depth"] = depth;
+        lastStats_["device"] = context_->deviceName();
+        lastStats_["trace_ms"] = frame.gpuMs;
+        lastStats_["wall_ms"] = frame.wallMs;
+        lastStats_["readback_ms"] = readbackMs;
+        lastStats_["tracer_ms"] = tracerMs; // 0: the tracer was kept from the last render
+        py::dict rays;
+        rays["primary"] = frame.rays.primary;
+        rays["shadow"] = frame.rays.shadow;
+        rays["secondary"] = frame.rays.secondary;
+        lastStats_["rays"] = rays;
+        lastStats_["mrays_per_s"] = double(frame.rays.total()) / (frame.gpuMs * 1e3);
+        lastStats_["resume_dispatches"] = frame.resumeDispatches;
+        py::dict tiles;
+        tiles["full"] = frame.tiles[0];
+        tiles["planes_only"] = frame.tiles[1];
+        tiles["background"] = frame.tiles[2];
+        lastStats_["tiles"] = tiles;
+        return out;
+    }
+
+    std::string device() const { return context_->deviceName(); }
+    py::dict lastStats() const { return lastStats_; }
+
+private:
+    std::unique_ptr<vk::Context> context_;
+    std::mutex mutex_;
+    TracerKey key_;
+    std::shared_ptr<const PreparedScene> keptScene_;
+    std::unique_ptr<RayTracer> tracer_; // destroyed before the context (declared after it)
+    py::dict lastStats_;
+};
+
+} // namespace
+
+void bindRenderer(py::module_ &m) {
+    py::class_<PyRenderer>(
+        m, "Renderer",
+        "Owns a Vulkan device and, for the last scene and settings rendered, the scene's GPU "
+        "arrays and compiled tracer: renders of the same scene at the same size, depth and "
+        "AOVs reuse them (a camera or frame change does not rebuild anything). Renders run "
+        "with the GIL released.")
+        .def(py::init<const std::optional<std::string> &, bool>(), py::arg("device") = py::none(),
+             py::arg("validation") = false,
+             "device: the first Vulkan device whose name contains this text (None: a discrete "
+             "GPU if there is one, else lavapipe); validation: Vulkan validation layers, a "
+             "message then fails the render.")
+        .def("render", &PyRenderer::render, py::arg("scene"), py::arg("width") = 640,
+             py::arg("height") = 480, py::arg("spp") = 1, py::arg("depth") = 5,
+             py::arg("aovs") = std::vector<std::string>{"rgb"},
+             "Renders `scene` through its camera. Returns a dict of float32 NumPy arrays, "
+             "C-contiguous, height x width x channels, row 0 at the top: 'rgb' (linear "
+             "radiance, not clamped), 'z' (distance along the pixel's centre ray, inf on a "
+             "miss), 'n' (unit geometric normal facing the ray, 0 on a miss), those named in "
+             "`aovs`. The same image as prism-render's EXR for the same options, bit for bit.")
+        .def_property_readonly("device", &PyRenderer::device, "The Vulkan device's name.")
+        .def_property_readonly(
+            "last_stats", &PyRenderer::lastStats,
+            "The last render's figures: trace_ms (GPU timestamps), wall_ms, readback_ms, "
+            "tracer_ms (making the tracer; 0 when kept), rays {primary, shadow, secondary}, "
+            "mrays_per_s, tiles, and the settings; names as in prism-render --stats.");
+}
+
+} // namespace prism::python
