@@ -2,6 +2,7 @@
 // What the binding files share: the Python-side objects and the registration functions
 // module.cpp calls. Bindings only: the work is the engine's (session/, render/).
 #include <memory>
+#include <string>
 
 #include <pybind11/pybind11.h>
 
@@ -17,9 +18,12 @@ struct PyScene {
     std::shared_ptr<const PreparedScene> prepared;
     Camera camera; // in prepared->scene's (centred) coordinates
     double frame = 1.0;
+    std::string path; // the .scene file, or "<string>" (last_stats' "scene")
+    double loadMs = 0.0; // reading the file (last_stats' "load_ms")
 };
 
 void bindScene(pybind11::module_ &m);
 void bindRenderer(pybind11::module_ &m);
+void bindWrite(pybind11::module_ &m);
 
 } // namespace prism::python

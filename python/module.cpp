@@ -51,4 +51,5 @@ PYBIND11_MODULE(prism, m) {
 
     prism::python::bindScene(m);
     prism::python::bindRenderer(m);
+    prism::python::bindWrite(m);
 }

@@ -14,6 +14,8 @@
 #include "bindings.h"
 #include "core/timer.h"
 #include "render/ray_tracer.h"
+#include "session/render_stats.h"
+#include "shared/gpu_types.h"
 #include "vk/context.h"
 
 namespace py = pybind11;
@@ -40,7 +42,8 @@ public:
     }
 
     py::dict render(const std::shared_ptr<PyScene> &scene, uint32_t width, uint32_t height,
-                    uint32_t spp, uint32_t depth, const std::vector<std::string> &aovs) {
+                    uint32_t spp, uint32_t depth, uint32_t seed,
+                    const std::vector<std::string> &aovs) {
         if (width == 0 || height == 0 || width > 16384 || height > 16384)
             throw py::value_error("width and height must be 1 to 16384, got " +
                                   std::to_string(width) + "x" + std::to_string(height));
@@ -48,6 +51,9 @@ public:
             throw py::value_error("spp must be 1 to 65536, got " + std::to_string(spp));
         if (depth == 0 || depth > 16)
             throw py::value_error("depth must be 1 to 16, got " + std::to_string(depth));
+        if (seed > gpu::kMaxSeed)
+            throw py::value_error("seed must be 0 to " + std::to_string(gpu::kMaxSeed) + ", got " +
+                                  std::to_string(seed));
         bool rgb = false, z = false, n = false;
         for (const std::string &a : aovs) {
             bool &wanted = a == "rgb" ? rgb : a == "z" ? z : n;
@@ -58,6 +64,7 @@ public:
         TracedImage image;
         FrameResult frame;
         double tracerMs = 0.0, readbackMs = 0.0;
+        std::vector<ArrayBytes> sceneArrays;
         Camera camera = scene->camera;
         uint32_t messagesBefore = context_->validationMessageCount();
         {
@@ -77,15 +84,18 @@ public:
                 key_ = key;
                 keptScene_ = scene->prepared; // the tracer's scene stays alive with it
             }
-            frame = tracer_->renderFrame(camera, spp);
+            tracer_->setSeed(seed);
+            frame = tracer_->renderFrame(camera, spp, {}, true); // copied out in its submission
             Timer readback;
             image = tracer_->readback(spp);
             readbackMs = readback.elapsedMs();
+            sceneArrays = tracer_->sceneArrayBytes();
         }
         if (context_->validationMessageCount() != messagesBefore)
             throw std::runtime_error(
                 std::to_string(context_->validationMessageCount() - messagesBefore) +
                 " Vulkan validation messages (printed on stderr) during this render");
+        Timer arrays;
         py::dict out;
         size_t pixels = size_t(width) * height;
         auto array = [&](size_t channels, auto fill) {
@@ -106,33 +116,45 @@ public:
             out["n"] = array(3, [&](float *to) {
                 std::copy(image.normal.begin(), image.normal.end(), to);
             });
-        lastStats_ = py::dict();
-        lastStats_["width"] = width;
-        lastStats_["height"] = height;
-        lastStats_["spp"] = spp;
-        lastStats_["depth"] = depth;
-        lastStats_["device"] = context_->deviceName();
-        lastStats_["trace_ms"] = frame.gpuMs;
-        lastStats_["wall_ms"] = frame.wallMs;
-        lastStats_["readback_ms"] = readbackMs;
-        lastStats_["tracer_ms"] = tracerMs; // 0: the tracer was kept from the last render
-        py::dict rays;
-        rays["primary"] = frame.rays.primary;
-        rays["shadow"] = frame.rays.shadow;
-        rays["secondary"] = frame.rays.secondary;
-        lastStats_["rays"] = rays;
-        lastStats_["mrays_per_s"] = double(frame.rays.total()) / (frame.gpuMs * 1e3);
-        lastStats_["resume_dispatches"] = frame.resumeDispatches;
-        py::dict tiles;
-        tiles["full"] = frame.tiles[0];
-        tiles["planes_only"] = frame.tiles[1];
-        tiles["background"] = frame.tiles[2];
-        lastStats_["tiles"] = tiles;
+        double arraysMs = arrays.elapsedMs();
+        // The names of prism-render --stats (session/render_stats.h), less what only a
+        // command's run has (walk counts, writes, the process's phases).
+        nlohmann::json stats = {{"scene", scene->path},
+                                {"backend", "vulkan"},
+                                {"device", context_->deviceName()},
+                                {"width", width},
+                                {"height", height},
+                                {"region", "0," + std::to_string(width) + ",0," +
+                                               std::to_string(height)},
+                                {"spp", spp},
+                                {"depth", depth},
+                                {"seed", seed},
+                                {"load_ms", scene->loadMs},
+                                {"trace_ms", frame.gpuMs},
+                                {"trace_ms_median", frame.gpuMs},
+                                {"wall_ms", frame.wallMs},
+                                {"wall_ms_median", frame.wallMs},
+                                {"frames", 1},
+                                {"tiles", tileStats(frame.tiles)},
+                                {"scene_gpu_bytes", gpuBytesStats(sceneArrays)},
+                                {"phases_ms",
+                                 {{"tracer", tracerMs}, // 0: kept from the last render
+                                  {"frames", frame.wallMs},
+                                  {"readback", readbackMs},
+                                  {"arrays", arraysMs}}}};
+        stats.update(sceneStats(*scene->prepared));
+        stats.update(frameStats(frame.rays, frame.gpuMs, frame.resumeDispatches));
+        lastStats_ = std::move(stats);
+        lastStatsDict_ = py::none(); // made when asked for: a loop that never looks pays nothing
         return out;
     }
 
     std::string device() const { return context_->deviceName(); }
-    py::dict lastStats() const { return lastStats_; }
+    py::object lastStats() {
+        if (lastStatsDict_.is_none())
+            lastStatsDict_ = py::module_::import("json").attr("loads")(lastStats_.dump());
+        return lastStatsDict_;
+    }
 
 private:
     std::unique_ptr<vk::Context> context_;
@@ -140,7 +162,8 @@ private:
     TracerKey key_;
     std::shared_ptr<const PreparedScene> keptScene_;
     std::unique_ptr<RayTracer> tracer_; // destroyed before the context (declared after it)
-    py::dict lastStats_;
+    nlohmann::json lastStats_ = nlohmann::json::object();
+    py::object lastStatsDict_ = py::none();
 };
 
 } // namespace
@@ -159,18 +182,23 @@ void bindRenderer(py::module_ &m) {
              "message then fails the render.")
         .def("render", &PyRenderer::render, py::arg("scene"), py::arg("width") = 640,
              py::arg("height") = 480, py::arg("spp") = 1, py::arg("depth") = 5,
+             py::arg("seed") = 0,
              py::arg("aovs") = std::vector<std::string>{"rgb"},
              "Renders `scene` through its camera. Returns a dict of float32 NumPy arrays, "
              "C-contiguous, height x width x channels, row 0 at the top: 'rgb' (linear "
              "radiance, not clamped), 'z' (distance along the pixel's centre ray, inf on a "
              "miss), 'n' (unit geometric normal facing the ray, 0 on a miss), those named in "
-             "`aovs`. The same image as prism-render's EXR for the same options, bit for bit.")
+             "`aovs`. The same image as prism-render's EXR for the same options, bit for bit. "
+             "seed: the sampling seed (0 to 16777215; 0 draws what prism-render draws without "
+             "--seed): another seed draws another independent set of samples.")
         .def_property_readonly("device", &PyRenderer::device, "The Vulkan device's name.")
         .def_property_readonly(
             "last_stats", &PyRenderer::lastStats,
-            "The last render's figures: trace_ms (GPU timestamps), wall_ms, readback_ms, "
-            "tracer_ms (making the tracer; 0 when kept), rays {primary, shadow, secondary}, "
-            "mrays_per_s, tiles, and the settings; names as in prism-render --stats.");
+            "The last render's figures, a dict with prism-render --stats' names "
+            "(docs/python.md): trace_ms (GPU timestamps), wall_ms, rays {primary, shadow, "
+            "secondary}, mrays_per_s, tiles, the grid's and the scene's figures, "
+            "scene_gpu_bytes, phases_ms {tracer (0: the tracer was kept), frames, readback, "
+            "arrays}, and the settings.");
 }
 
 } // namespace prism::python

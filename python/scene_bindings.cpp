@@ -10,6 +10,7 @@
 
 #include "bindings.h"
 #include "cache/disk_cache.h"
+#include "core/timer.h"
 #include "scene/camera_animation.h"
 #include "scene/scene_loader.h"
 
@@ -27,7 +28,8 @@ glm::dvec3 vec(const Vec3 &v) {
     return {v[0], v[1], v[2]};
 }
 
-std::shared_ptr<PyScene> prepare(Scene loaded, const std::string &grid, bool cache) {
+std::shared_ptr<PyScene> prepare(Scene loaded, const std::string &grid, bool cache,
+                                 const std::string &path, double loadMs) {
     GridOptions options = parseGridOption(grid);
     std::optional<DiskCache> store;
     if (cache)
@@ -39,6 +41,8 @@ std::shared_ptr<PyScene> prepare(Scene loaded, const std::string &grid, bool cac
             prepareScene(std::move(loaded), options, store ? &*store : nullptr));
     }
     scene->camera = scene->prepared->scene.camera;
+    scene->path = path;
+    scene->loadMs = loadMs;
     return scene;
 }
 
@@ -112,9 +116,10 @@ void bindScene(py::module_ &m) {
             [](const std::string &text, const std::string &base_dir, const std::string &grid,
                bool cache) {
                 // Paths in the text (meshes, textures) resolve against base_dir.
+                Timer load;
                 Scene loaded =
                     parseScene(text, std::filesystem::path(base_dir) / "<string>.scene");
-                return prepare(std::move(loaded), grid, cache);
+                return prepare(std::move(loaded), grid, cache, "<string>", load.elapsedMs());
             },
             py::arg("text"), py::arg("base_dir") = ".", py::arg("grid") = "auto",
             py::arg("cache") = true,
@@ -137,6 +142,16 @@ void bindScene(py::module_ &m) {
             [](const PyScene &s) { return s.prepared->scene.cameraAnimation.animated(); },
             "Whether the scene's camera moves (key lines or a turntable).")
         .def_property_readonly(
+            "last_frame",
+            [](const PyScene &s) {
+                const CameraAnimation &a = s.prepared->scene.cameraAnimation;
+                if (a.turntable)
+                    return a.turntable->frames; // frame frames + 1 would be frame 1 again
+                return a.keys.empty() ? 1.0 : a.keys.back().frame;
+            },
+            "The animation's last frame: a turntable's frame count, the last key's frame, or 1 "
+            "for a still scene. Frames run from 1.")
+        .def_property_readonly(
             "primitives",
             [](const PyScene &s) { return s.prepared->scene.finitePrimitiveCount(); },
             "Finite primitives (triangles and spheres) as the grid holds them.")
@@ -150,11 +165,12 @@ void bindScene(py::module_ &m) {
     m.def(
         "load",
         [](const std::string &path, const std::string &grid, bool cache) {
+            Timer load;
             Scene loaded = [&] {
                 py::gil_scoped_release released; // big OBJ files take seconds
                 return loadScene(path);
             }();
-            return prepare(std::move(loaded), grid, cache);
+            return prepare(std::move(loaded), grid, cache, path, load.elapsedMs());
         },
         py::arg("path"), py::arg("grid") = "auto", py::arg("cache") = true,
         "Loads a .scene file (docs/scene-format.md) and builds its grid: grid is 'auto', "

@@ -263,7 +263,8 @@ void main() {
         inside = inside && gResume.progress.y == 0u;
         chargeBudget(32u); // the strata loops of the sample's position (sampling.h)
     }
-    uint pixelIndex = pixel.y * frame.image.x + pixel.x;
+    // Every sample number of this pixel is drawn for this key (the index under seed 0).
+    uint pixelIndex = samplingKey(pixel.y * frame.image.x + pixel.x, frameSeed(frame));
     uint sampleIndex = frameSampleIndex(frame);
     vec3 radiance = vec3(0.0);
     vec4 aov = vec4(0.0, 0.0, 0.0, kInfinity);

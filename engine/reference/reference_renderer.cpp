@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "reference/scene_query.h"
+#include "shared/sampling.h"
 #include "reference/surface_reference.h"
 #include "reference/trace_reference.h"
 #include "scene/instance_flattening.h"
@@ -77,7 +78,7 @@ void renderRow(const Scene &scene, const RenderSettings &settings, const CameraF
         glm::dvec3 sum(0.0);
         for (uint32_t sample = 0; sample < settings.samplesPerPixel; ++sample)
             sum += tracePixelSample(scene, frame, px, py, sample, settings.samplesPerPixel,
-                                    settings.maxDepth, rays);
+                                    settings.maxDepth, rays, settings.seed);
         image.rgba[pixel] = glm::vec4(glm::vec3(sum / double(settings.samplesPerPixel)), 1.0f);
         writeAov(scene, frame, px, py, image.depth[pixel], image.normal[pixel]);
     }
@@ -87,8 +88,8 @@ void renderRow(const Scene &scene, const RenderSettings &settings, const CameraF
 
 glm::dvec3 tracePixelSample(const Scene &scene, const CameraFrame &frame, int px, int py,
                             uint32_t sampleIndex, uint32_t spp, uint32_t maxDepth,
-                            RayCounts &rays) {
-    uint32_t pixelIndex = uint32_t(py) * uint32_t(frame.width) + uint32_t(px);
+                            RayCounts &rays, uint32_t seed) {
+    uint32_t pixelIndex = gpu::samplingKey(uint32_t(py) * uint32_t(frame.width) + uint32_t(px), seed);
     Ray ray = cameraRay(frame, pixelSamplePosition(px, py, pixelIndex, sampleIndex, spp));
     rays.primary += 1;
     return reference::traceRadiance(scene, ray, {pixelIndex, sampleIndex, spp}, maxDepth, rays);

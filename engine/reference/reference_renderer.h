@@ -20,6 +20,7 @@ struct RenderSettings {
     uint32_t samplesPerPixel = 1;
     uint32_t maxDepth = 5; // 1 = primary and shadow rays only
     std::optional<Camera> camera; // an animated scene's frame (camera_animation.h); else its own
+    uint32_t seed = 0;            // the sampling seed (shared/sampling.h: samplingKey)
 };
 
 struct RenderedImage {
@@ -39,8 +40,10 @@ RenderedImage renderReference(const Scene &scene, const RenderSettings &settings
                               const std::function<void(double)> &progress = {});
 
 // Radiance of one sample of pixel (px, py): the primary ray through pixelSamplePosition,
-// traced up to maxDepth. Adds the rays it traces (1 primary, shadow, secondary) to `rays`.
+// traced up to maxDepth, its sample numbers drawn under `seed`. Adds the rays it traces
+// (1 primary, shadow, secondary) to `rays`.
 glm::dvec3 tracePixelSample(const Scene &scene, const CameraFrame &frame, int px, int py,
-                            uint32_t sampleIndex, uint32_t spp, uint32_t maxDepth, RayCounts &rays);
+                            uint32_t sampleIndex, uint32_t spp, uint32_t maxDepth, RayCounts &rays,
+                            uint32_t seed = 0);
 
 } // namespace prism

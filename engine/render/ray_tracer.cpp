@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <optional>
+#include <string>
 
 #include "core/error.h"
 #include "core/timer.h"
@@ -147,6 +148,7 @@ void RayTracer::bindImages(vk::ComputePipeline &pipeline) {
 }
 
 void RayTracer::resize(uint32_t width, uint32_t height) {
+    copiedOut_ = false;
     vkDeviceWaitIdle(context_.device()); // no submission may still use the old images
     keptTiles_.params.reset();           // defensive: the new size's parameters differ anyway
     region_ = wholeImage(width, height);
@@ -243,6 +245,7 @@ void RayTracer::recordSamples(VkCommandBuffer commands, const Camera &camera, ui
 
 void RayTracer::recordSamples(VkCommandBuffer commands, gpu::GpuFrameParams params,
                               const TileLists &lists, uint32_t firstSample, uint32_t count) {
+    copiedOut_ = false;
     recordTileList(commands, lists);
     for (uint32_t s = firstSample; s < firstSample + count; ++s) {
         setFrameSample(params, s);
@@ -255,9 +258,17 @@ gpu::GpuFrameParams RayTracer::frameParams(const Camera &camera, uint32_t sample
         makeFrameParams(camera, width_, height_, samplesPerPixel, features_.maxDepth);
     params.seedsAndLoops.z = planeCount_;
     params.seedsAndLoops.w = lightCount_;
+    params.forward.w = float(seed_); // frameSeed
     params.du.w = float(window_.x0 * kTileSize); // frameStoreOrigin
     params.dv.w = float(window_.y0 * kTileSize);
     return params;
+}
+
+void RayTracer::setSeed(uint32_t seed) {
+    if (seed > gpu::kMaxSeed)
+        throw Error("the sampling seed is 0 to " + std::to_string(gpu::kMaxSeed) + ", got " +
+                    std::to_string(seed));
+    seed_ = seed;
 }
 
 std::vector<uint8_t> RayTracer::frameTileClasses(const gpu::GpuFrameParams &params) const {
@@ -356,6 +367,7 @@ void RayTracer::recordAccumulationBarrier(VkCommandBuffer commands) {
 }
 
 void RayTracer::compile(const Camera &camera) {
+    copiedOut_ = false;
     gpu::GpuFrameParams params = frameParams(camera, 1);
     const TileLists &lists = frameTiles(params, false);
     runner_.run([&](VkCommandBuffer commands) {
@@ -375,7 +387,7 @@ void RayTracer::compile(const Camera &camera) {
 }
 
 FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixel,
-                                   const std::function<void(double)> &progress) {
+                                   const std::function<void(double)> &progress, bool copyOut) {
     if (features_.resumable)
         return renderResumable(camera, samplesPerPixel, progress);
     FrameResult result;
@@ -400,6 +412,8 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
             vk::memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                               VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
                               VK_ACCESS_HOST_READ_BIT);
+            if (copyOut && chunk + 1 == chunks)
+                recordCopyOut(commands); // after the timestamps: not part of the trace's time
         });
         double hostMs = hostTimer.elapsedMs();
         result.gpuMs += timestamps_.elapsedMs().value_or(hostMs);
@@ -415,6 +429,7 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
     // Counted from the lists the frame was traced with (FrameResult::tiles' order).
     result.tiles = {lists.full, lists.traced - lists.full,
                     uint32_t(lists.tiles.size()) - lists.traced};
+    copiedOut_ = copyOut;
     if (result.loopCutPixels > 0) {
         FrameResult resumed = renderResumable(camera, samplesPerPixel, progress); // switches
         resumed.gpuMs += result.gpuMs; // the frame's time includes the pass that was cut
@@ -423,6 +438,39 @@ FrameResult RayTracer::renderFrame(const Camera &camera, uint32_t samplesPerPixe
         return resumed;
     }
     return result;
+}
+
+void RayTracer::recordCopyOut(VkCommandBuffer commands) {
+    VkDeviceSize bytes = VkDeviceSize(region_.width()) * region_.height() * 16;
+    auto kept = [&](vk::Buffer &buffer, VkDeviceSize size) -> const vk::Buffer & {
+        if (buffer.size() != size) // the first readback, or another size since (resize)
+            buffer = vk::Buffer(context_, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+        return buffer;
+    };
+    const vk::Buffer &colour = kept(readbackColour_, bytes);
+    const vk::Buffer &aov = kept(readbackAov_, features_.writeAov ? bytes : 16);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageOffset = {int32_t(region_.x0 - window_.x0 * kTileSize),
+                          int32_t(region_.y0 - window_.y0 * kTileSize), 0};
+    region.imageExtent = {region_.width(), region_.height(), 1};
+    auto copyOut = [&](const vk::Image &image, VkBuffer target) {
+        vk::imageBarrier(commands, image.handle(), VK_IMAGE_LAYOUT_GENERAL,
+                         VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_ACCESS_TRANSFER_READ_BIT);
+        vkCmdCopyImageToBuffer(commands, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               target, 1, &region);
+        vk::imageBarrier(commands, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    };
+    copyOut(accum_, colour.handle());
+    if (features_.writeAov)
+        copyOut(aov_, aov.handle());
+    vk::memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
 }
 
 TracedImage RayTracer::readback(uint32_t samplesPerPixel) {
@@ -435,33 +483,11 @@ TracedImage RayTracer::readback(uint32_t samplesPerPixel) {
     out.fullHeight = height_;
     size_t pixels = size_t(out.width) * out.height;
     bool withAov = features_.writeAov;
-    VkDeviceSize bytes = pixels * 16;
-    vk::Buffer colour(context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
-    vk::Buffer aov(context_, withAov ? bytes : 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
-    runner_.run([&](VkCommandBuffer commands) {
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageOffset = {int32_t(region_.x0 - window_.x0 * kTileSize),
-                              int32_t(region_.y0 - window_.y0 * kTileSize), 0};
-        region.imageExtent = {out.width, out.height, 1};
-        auto copyOut = [&](const vk::Image &image, VkBuffer target) {
-            vk::imageBarrier(commands, image.handle(), VK_IMAGE_LAYOUT_GENERAL,
-                             VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                             VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
-            vkCmdCopyImageToBuffer(commands, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                   target, 1, &region);
-            vk::imageBarrier(commands, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                             VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                             VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                             VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-        };
-        copyOut(accum_, colour.handle());
-        if (withAov)
-            copyOut(aov_, aov.handle());
-        vk::memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                          VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
-    });
+    if (!copiedOut_)
+        runner_.run([&](VkCommandBuffer commands) { recordCopyOut(commands); });
+    copiedOut_ = false; // the next readback copies again unless a frame did
+    const vk::Buffer &colour = readbackColour_;
+    const vk::Buffer &aov = readbackAov_;
     const float *sums = static_cast<const float *>(colour.mapped());
     out.rgba.resize(pixels * 4);
     float scale = 1.0f / float(samplesPerPixel);

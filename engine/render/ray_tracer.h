@@ -75,8 +75,11 @@ public:
     // A frame whose pixels overran lavapipe's loop limit is traced again resumably, and from
     // then on every frame of this tracer is. Throws prism::Error when a sample cannot be
     // finished even so (more walks than a pixel's log holds).
+    // With `copyOut`, the frame's last submission also copies the image out for readback, which
+    // then submits nothing (on lavapipe a submission and its wait cost about 0.7 ms).
     FrameResult renderFrame(const Camera &camera, uint32_t samplesPerPixel,
-                            const std::function<void(double)> &progress = {});
+                            const std::function<void(double)> &progress = {},
+                            bool copyOut = false);
 
     // Copies the accumulation (and AOVs) of the region (TracerOptions::region; else the whole
     // image) to the host and divides by the sample count.
@@ -87,6 +90,12 @@ public:
     // How many times this tracer has made tile lists: once a frame, and once for all the
     // progressive samples of a resting camera (recordSamples).
     uint64_t tileListsMade() const { return keptTiles_.made; }
+    // The sampling seed of the frames traced from now on (shared/sampling.h: samplingKey): 0,
+    // the default, draws the samples every earlier image drew; another seed draws another
+    // independent set. Pixels draw by their place in the whole image, so a region or tile
+    // traced under a seed is that seed's whole image's. Throws prism::Error above kMaxSeed.
+    void setSeed(uint32_t seed);
+    uint32_t seed() const { return seed_; }
 
     // Resumable tracing (shaders/resume.glsl) for callers that record their own frames (the
     // viewer), once their counters show cut pixels: enableResumable switches this tracer for
@@ -188,12 +197,20 @@ private:
     SceneBuffers scene_;
     vk::Buffer stats_;
     uint32_t planeCount_ = 0, lightCount_ = 0;
+    uint32_t seed_ = 0;
     uint64_t resumeMemoryBytes_ = 0;
     ResumePlan resumePlan_;
     vk::Buffer resumeRecords_; // resumable tracing; 32-byte stand-ins otherwise
     vk::Buffer walkLog_;
     vk::Image accum_;
     vk::Image aov_;
+    // Host-visible copies of accum_ and aov_ for readback, kept between frames: made anew for
+    // each, their allocation and first touch cost a 320x240 frame 0.5 ms (a loop of views).
+    vk::Buffer readbackColour_, readbackAov_;
+    // The readback buffers hold the accumulation as it is now (renderFrame's copyOut): every
+    // recording that writes the accumulation clears it.
+    bool copiedOut_ = false;
+    void recordCopyOut(VkCommandBuffer commands);
     vk::Buffer tileList_; // rg32ui, one entry per tile of the image: tile, start distance
     vk::BufferView tileListView_;
     vk::TimestampQueries timestamps_;

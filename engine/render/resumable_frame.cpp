@@ -43,6 +43,7 @@ void RayTracer::startResuming() {
 void RayTracer::traceSampleResumably(const Camera &camera, uint32_t sample,
                                      uint32_t samplesPerPixel, bool resetCounters,
                                      FrameResult &result) {
+    copiedOut_ = false;
     const ResumePlan &plan = resumePlan_;
     // The plan's tiles over the region's 8x8 tiles (the whole image without a region).
     uint32_t originX = window_.x0 * kTileSize, originY = window_.y0 * kTileSize;

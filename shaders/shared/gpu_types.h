@@ -274,7 +274,7 @@ struct GpuStats {
 // Per-frame parameters (push constants, 128 bytes at most).
 struct GpuFrameParams {
     vec4 eye;     // xyz: camera position; w: 1 for parallel projection
-    vec4 forward; // xyz: unit view direction
+    vec4 forward; // xyz: unit view direction; w: the sampling seed (frameSeed)
     vec4 du;      // xyz: right scaled by h*a (perspective) or (H/2)*a (ortho); w: store origin x
     vec4 dv;      // xyz: true up scaled by h (perspective) or H/2 (ortho); w: store origin y
     uvec4 image;  // x width, y height, z this dispatch's sample index, w samples per pixel
@@ -307,6 +307,12 @@ PRISM_INLINE bool isParallelCamera(PRISM_IN(GpuFrameParams) f) {
 PRISM_INLINE uvec2 frameStoreOrigin(PRISM_IN(GpuFrameParams) f) {
     return uvec2(uint(f.du.w), uint(f.dv.w));
 }
+// The sampling seed (shared/sampling.h: samplingKey), in forward.w, which the camera does not
+// use, as a float: exact below 2^24 (RayTracer::setSeed refuses larger seeds).
+PRISM_INLINE uint frameSeed(PRISM_IN(GpuFrameParams) f) {
+    return uint(f.forward.w);
+}
+PRISM_CONST(uint, kMaxSeed, 16777215u);
 PRISM_INLINE uint frameSampleIndex(PRISM_IN(GpuFrameParams) f) {
     return f.image.z;
 }

@@ -20,6 +20,15 @@ PRISM_INLINE uint pcgHash(uint v) {
 #define PRISM_DIM_PIXEL_Y 1u
 #define PRISM_DIM_LIGHT_BASE 2u
 
+// The number a pixel's samples are drawn for: its index (y * width + x, in the whole image, so
+// that a region or tile draws what the whole image would), or under a sampling seed other than
+// 0 (prism-render --seed, the Python module's seed=) a hash of index and seed, a permutation of
+// the pixels for each seed. Seed 0 is the index itself: images made before seeds existed are
+// unchanged.
+PRISM_INLINE uint samplingKey(uint pixelIndex, uint seed) {
+    return seed == 0u ? pixelIndex : pcgHash(pixelIndex ^ pcgHash(seed ^ 0x5EED5EEDu));
+}
+
 // A uniform number in [0, 1) for (pixel, sample, dimension); 24 bits, exact in float. The seed
 // is the part that does not depend on the pixel: the host computes it once per dispatch for the
 // pixel jitter (GpuFrameParams::seedsAndLoops).

@@ -1,5 +1,5 @@
 // The shared sample numbers (shaders/shared/sampling.h): stratified area-light pairs put each
-// of a pixel's samples in its own stratum.
+// of a pixel's samples in its own stratum; a sampling seed gives every pixel samples of its own.
 #include <set>
 #include <utility>
 
@@ -46,6 +46,25 @@ TEST(StratifiedPair, StratumOrderDiffersBetweenPixels) {
         differentFirstStratum += uint(stratifiedPair(pixel, 0u, 16u, 2u).x * 4.0f) !=
                                  uint(stratifiedPair(0u, 0u, 16u, 2u).x * 4.0f);
     EXPECT_GT(differentFirstStratum, 20);
+}
+
+// A seed other than 0 gives each pixel its own key (no two pixels of a 1024x768 image share
+// their samples), seed 0 keeps the pixel index (the images made before seeds), and two seeds
+// agree on almost no pixel.
+TEST(SamplingKey, EachSeedGivesEveryPixelItsOwnSamples) {
+    const uint pixels = 1024u * 768u;
+    for (uint seed : {1u, 2u, 16777215u}) {
+        std::set<uint> keys;
+        for (uint p = 0; p < pixels; ++p)
+            keys.insert(samplingKey(p, seed));
+        EXPECT_EQ(keys.size(), size_t(pixels)) << "seed " << seed;
+    }
+    for (uint p : {0u, 1u, 4095u, 33177599u})
+        EXPECT_EQ(samplingKey(p, 0u), p);
+    size_t same = 0;
+    for (uint p = 0; p < pixels; ++p)
+        same += samplingKey(p, 1u) == samplingKey(p, 2u) || samplingKey(p, 1u) == p ? 1 : 0;
+    EXPECT_LE(same, 2u);
 }
 
 } // namespace

@@ -20,11 +20,12 @@ struct GpuRender {
 // As prism-render does: the scene centred on the camera (scene/scene_origin.h), then its grid.
 inline GpuRender renderGpu(vk::Context &context, Scene scene, uint32_t width, uint32_t height,
                            uint32_t spp = 1, uint32_t depth = 5, GridOptions gridOptions = {},
-                           TracerOptions options = {}) {
+                           TracerOptions options = {}, uint32_t seed = 0) {
     centerOnCamera(scene);
     Grid grid = buildGrid(scene, gridOptions);
     options.maxDepth = depth;
     RayTracer tracer(context, scene, grid, width, height, options);
+    tracer.setSeed(seed);
     GpuRender out;
     out.frame = tracer.renderFrame(scene.camera, spp);
     out.image = tracer.readback(spp);
@@ -43,13 +44,15 @@ inline void expectSameFrame(const GpuRender &a, const GpuRender &b) {
 
 // The same centred scene as renderGpu gives the GPU.
 inline std::vector<float> renderCpu(Scene scene, int width, int height, uint32_t spp = 1,
-                                    uint32_t depth = 5, RayCounts *rays = nullptr) {
+                                    uint32_t depth = 5, RayCounts *rays = nullptr,
+                                    uint32_t seed = 0) {
     centerOnCamera(scene);
     RenderSettings settings;
     settings.width = width;
     settings.height = height;
     settings.samplesPerPixel = spp;
     settings.maxDepth = depth;
+    settings.seed = seed;
     RenderedImage image = renderReference(scene, settings);
     if (rays)
         *rays = image.rays;

@@ -40,10 +40,10 @@ protected:
         }
         return list;
     }
-    void renderTiles(int count) {
+    void renderTiles(int count, const std::string &args = "") {
         for (int i = 0; i < count; ++i) {
             CliResult r = render("--tile " + std::to_string(i) + "/" + std::to_string(count) +
-                                 " -o " + path("tile{tile}.exr"));
+                                 " -o " + path("tile{tile}.exr") + args);
             ASSERT_EQ(r.exitCode, 0) << r.out;
         }
     }
@@ -107,6 +107,26 @@ TEST_F(PrismRenderTiles, SixteenTilesMergeIntoTheWholeImageBitForBit) {
                                    "tools/scripts/install-deps.sh) failed: "
                                 << oiio.out;
     EXPECT_EQ(prism::readImage(dir() / "oiio.exr").pixels, whole.pixels);
+}
+
+// --seed draws other samples (pbrt's --seed); tiles draw what the whole image draws under it.
+TEST_F(PrismRenderTiles, SeededTilesMergeIntoTheSeededWholeImage) {
+    ASSERT_EQ(render("-o " + path("unseeded.exr")).exitCode, 0);
+    ASSERT_EQ(render("--seed 99 -o " + path("whole.exr")).exitCode, 0);
+    renderTiles(4, " --seed 99");
+    ASSERT_EQ(merge(tiles(4) + " -o " + path("merged.exr")).exitCode, 0);
+    prism::LoadedImage whole = prism::readImage(dir() / "whole.exr");
+    EXPECT_EQ(prism::readImage(dir() / "merged.exr").pixels, whole.pixels);
+    EXPECT_NE(prism::readImage(dir() / "unseeded.exr").pixels, whole.pixels);
+    int seed = -1;
+    for (const auto &[key, value] : whole.metadata.ints)
+        if (key == "prism:seed")
+            seed = value;
+    EXPECT_EQ(seed, 99);
+    CliResult bad = render("--seed 16777216 -o " + path("bad.exr"));
+    EXPECT_NE(bad.exitCode, 0) << bad.out;
+    EXPECT_NE(bad.out.find("--seed"), std::string::npos) << bad.out;
+    EXPECT_FALSE(fs::exists(dir() / "bad.exr"));
 }
 
 TEST_F(PrismRenderTiles, CropAndPixelBoundsWriteThePartInItsPlace) {

@@ -2,17 +2,6 @@
 
 namespace prism {
 
-std::string resolutionText(const glm::ivec3 &r) {
-    return std::to_string(r.x) + "x" + std::to_string(r.y) + "x" + std::to_string(r.z);
-}
-
-std::string gridText(const Grid &grid) {
-    if (!grid.adaptive())
-        return resolutionText(grid.resolution);
-    return "adaptive " + resolutionText(grid.resolution) + " top, " +
-           std::to_string(grid.cellCount()) + " cells, depth " + std::to_string(grid.depth);
-}
-
 ImageMetadata renderMetadata(const RenderRecord &r) {
     ImageMetadata meta;
     meta.strings = {{"prism:commandLine", r.commandLine},
@@ -33,7 +22,8 @@ ImageMetadata renderMetadata(const RenderRecord &r) {
                    {"prism:gridTestsPerPrimaryRay", float(r.gridTestsPerPrimaryRay)},
                    {"prism:mraysPerSecond", float(r.mraysPerSecond)}};
     meta.ints = {{"prism:samplesPerPixel", int(r.samplesPerPixel)},
-                 {"prism:maxDepth", int(r.maxDepth)}};
+                 {"prism:maxDepth", int(r.maxDepth)},
+                 {"prism:seed", int(r.seed)}};
     if (r.frame >= 0)
         meta.ints.emplace_back("prism:frame", r.frame);
     if (!r.region.empty())

@@ -9,6 +9,7 @@
 #include "accel/grid.h"
 #include "core/ray_counts.h"
 #include "io/image_metadata.h"
+#include "session/render_stats.h" // gridText
 
 namespace prism {
 
@@ -30,6 +31,7 @@ struct RenderRecord {
     double mraysPerSecond = 0.0;
     uint32_t samplesPerPixel = 1;
     uint32_t maxDepth = 5;
+    uint32_t seed = 0; // the sampling seed (prism:seed)
     int frame = -1; // the animation frame (prism:frame), written when >= 0: --frames renders
     // A part of the image (prism:region "x0,x1,y0,y1" in pixels, render/image_region.h) and
     // the tile it is (prism:tile "I/N"), written when not empty.
@@ -37,11 +39,5 @@ struct RenderRecord {
 };
 
 ImageMetadata renderMetadata(const RenderRecord &record);
-
-// "48x12x40"
-std::string resolutionText(const glm::ivec3 &resolution);
-
-// A regular grid's resolution, or "adaptive 13x5x13 top, 81234 cells, depth 3".
-std::string gridText(const Grid &grid);
 
 } // namespace prism

@@ -72,6 +72,7 @@ VulkanFrameSource::VulkanFrameSource(const RenderOptions &o, const Scene &scene,
     tracerOptions.region = o.region;
     Timer phase;
     tracer_ = std::make_unique<RayTracer>(*context_, scene, grid, o.width, o.height, tracerOptions);
+    tracer_->setSeed(o.seed);
     phases_.tracerMs = phase.elapsedMs();
     // lavapipe compiles the shader inside the first dispatch: one 8x8 tile takes that out of
     // the timed frames.
@@ -94,7 +95,8 @@ FrameOutcome VulkanFrameSource::render(const Camera &camera, const std::string &
                                : label;
         FrameResult result =
             tracer_->renderFrame(camera, frame == 0 ? 1u : o_.samplesPerPixel,
-                                 [&](double f) { progress.update(text, f, after); });
+                                 [&](double f) { progress.update(text, f, after); },
+                                 frame == o_.repeat); // the image read back below
         // renderFrame traces a frame that overran lavapipe's loop limit again, resumably.
         out.resumeDispatches = result.resumeDispatches;
         out.tiles = result.tiles;
@@ -134,6 +136,7 @@ FrameOutcome CpuFrameSource::render(const Camera &camera, const std::string &lab
     settings.height = int(o_.height);
     settings.samplesPerPixel = o_.samplesPerPixel;
     settings.maxDepth = o_.maxDepth;
+    settings.seed = o_.seed;
     settings.camera = camera;
     FrameOutcome out;
     RenderedImage rendered;

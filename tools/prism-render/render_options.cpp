@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "frame_range.h"
 #include "render/image_region.h"
+#include "shared/gpu_types.h"
 #include "size_option.h"
 #include "tool_environment.h"
 
@@ -132,6 +133,12 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
                    "Samples per pixel (stratified anti-aliasing, soft shadows)")
         ->check(CLI::Range(1u, 65536u))
         ->default_val(1);
+    app.add_option("--seed", options.seed,
+                   "Sampling seed: another seed draws another independent set of pixel and "
+                   "area-light samples (0, the default, the images Prism has always made); a "
+                   "tile or crop draws what the whole image does under the same seed")
+        ->check(CLI::Range(0u, gpu::kMaxSeed))
+        ->default_val(0);
     app.add_option("--depth", options.maxDepth,
                    "Maximum ray depth: 1 = primary and shadow rays only")
         ->check(CLI::Range(1u, 16u))

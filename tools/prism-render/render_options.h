@@ -23,6 +23,7 @@ struct RenderOptions {
     int tileIndex = -1, tileCount = 0; // --tile I/N
 
     uint32_t samplesPerPixel = 1;
+    uint32_t seed = 0; // the sampling seed (shared/sampling.h: samplingKey)
     uint32_t maxDepth = 5;
     GridOptions grid;
     std::string gridText = "auto";

@@ -25,6 +25,7 @@
 #include "scene/camera_animation.h"
 #include "scene/scene_loader.h"
 #include "session/prepared_scene.h"
+#include "session/render_stats.h"
 
 namespace prism {
 namespace {
@@ -105,7 +106,6 @@ void runRender(const RenderOptions &o) {
     PreparedScene prepared = prepareScene(std::move(loaded), o.grid, cache ? &*cache : nullptr);
     const Scene &scene = prepared.scene;
     const Grid &grid = prepared.grid;
-    const GridCacheOutcome &cacheOutcome = prepared.gridCache;
     double buildMs = prepared.buildMs;
     if (!o.quiet)
         for (const std::string &warning : scene.warnings)
@@ -172,6 +172,7 @@ void runRender(const RenderOptions &o) {
         record.mraysPerSecond = double(out.rays.total()) / (bestMs * 1e3);
         record.samplesPerPixel = o.samplesPerPixel;
         record.maxDepth = o.maxDepth;
+        record.seed = o.seed;
         record.frame = range ? job.frame : -1;
         if (!o.region.empty())
             record.region = regionText(o.region);
@@ -221,19 +222,11 @@ void runRender(const RenderOptions &o) {
             {"region", regionText(o.region.empty() ? wholeImage(o.width, o.height) : o.region)},
             {"spp", o.samplesPerPixel},
             {"depth", o.maxDepth},
-            {"primitives", scene.finitePrimitiveCount() + scene.planes.size()},
-            {"grid", gridText(grid)},
-            {"grid_cells", grid.cellCount()},
-            {"grid_bytes", grid.bytes()},
-            {"grid_mean_per_cell",
-             double(grid.cellPrimitives.size()) / double(std::max<uint64_t>(1, grid.cellCount()))},
-            {"grid_max_per_cell", grid.maxPerCell},
-            {"grid_choice", grid.choice},
+            {"seed", o.seed},
             {"grid_cells_per_primary_ray", walk.cellsPerRay},
             {"grid_tests_per_primary_ray", walk.testsPerRay},
             {"grid_counts_stopped", walk.stopped},
             {"load_ms", loadMs},
-            {"build_ms", buildMs},
             {"trace_ms", bestMs},
             {"trace_ms_median", median(allFrameMs)},
             // What a caller waits a frame (the host's share included): the GPU timestamps
@@ -241,42 +234,14 @@ void runRender(const RenderOptions &o) {
             {"wall_ms", *std::min_element(allWallMs.begin(), allWallMs.end())},
             {"wall_ms_median", median(allWallMs)},
             {"frames", allFrameMs.size()},
-            {"rays",
-             {{"primary", last.rays.primary},
-              {"shadow", last.rays.shadow},
-              {"secondary", last.rays.secondary}}},
-            {"mrays_per_s", double(last.rays.total()) / (bestMs * 1e3)},
-            {"resume_dispatches", last.resumeDispatches},
-            {"grid_cache",
-             {{"state", cacheOutcome.state},
-              {"key_ms", cacheOutcome.keyMs},
-              {"read_ms", cacheOutcome.readMs},
-              {"store_ms", cacheOutcome.storeMs}}},
             {"pipeline_cache",
              {{"loaded_bytes", pipelineCacheLoaded},
               {"saved_bytes", pipelineCacheSaved}}}};
-        if (vulkan) // which tracer ran each 8x8 tile (render/traced_tiles.h)
-            stats["tiles"] = {{"full", last.tiles[0]},
-                              {"planes_only", last.tiles[1]},
-                              {"background", last.tiles[2]}};
-        // Instances: the triangles stored (the scene's and each prototype's once) against the
-        // triangles the placements draw.
-        uint64_t placedTriangles = 0;
-        for (const Instance &i : scene.instances)
-            placedTriangles += scene.prototypes[i.prototype].triangles.size();
-        stats["triangles"] = {{"scene", scene.triangles.size()},
-                              {"prototypes", scene.prototypeTriangleCount()},
-                              {"instances", scene.instances.size()},
-                              {"placed", placedTriangles}};
+        stats.update(sceneStats(prepared));
+        stats.update(frameStats(last.rays, bestMs, last.resumeDispatches));
         if (vulkan) {
-            nlohmann::json gpuBytes;
-            uint64_t total = 0;
-            for (const ArrayBytes &a : vulkan->sceneArrays()) {
-                gpuBytes[a.what] = a.bytes;
-                total += a.bytes;
-            }
-            gpuBytes["total"] = total;
-            stats["scene_gpu_bytes"] = gpuBytes;
+            stats["tiles"] = tileStats(last.tiles);
+            stats["scene_gpu_bytes"] = gpuBytesStats(vulkan->sceneArrays());
         }
         double writeTotalMs = 0.0;
         for (double ms : writeMs)

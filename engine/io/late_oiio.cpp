@@ -1,0 +1,63 @@
+// readTexture, writeImage and readImage for front ends that load OpenImageIO only when they
+// first need it (io/oiio_plugin.h): each call goes through the table of libprism_oiio.so, the
+// library beside the binary this code is linked into, loaded at the first call.
+#include <dlfcn.h>
+
+#include "core/error.h"
+#include "io/oiio_plugin.h"
+
+namespace prism {
+namespace {
+
+// The directory of the binary (executable or shared library) that holds this function.
+std::filesystem::path ownDirectory() {
+    Dl_info info{};
+    if (dladdr(reinterpret_cast<void *>(&ownDirectory), &info) == 0 || !info.dli_fname)
+        return {};
+    return std::filesystem::path(info.dli_fname).parent_path();
+}
+
+const OiioPluginTable &plugin() {
+    static const OiioPluginTable *table = [] {
+        std::filesystem::path path = ownDirectory() / kOiioPluginFile;
+        void *library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!library)
+            throw Error(std::string("cannot load Prism's image-file library (OpenImageIO): ") +
+                        dlerror());
+        auto entry = reinterpret_cast<const OiioPluginTable *(*)()>(
+            dlsym(library, "prism_oiio_plugin_table"));
+        const OiioPluginTable *found = entry ? entry() : nullptr;
+        if (!found || found->version != kOiioPluginVersion)
+            throw Error(path.string() + " is not this build's image-file library (version " +
+                        std::to_string(found ? found->version : 0) + ", expected " +
+                        std::to_string(kOiioPluginVersion) + "): rebuild");
+        return found; // the library stays loaded for the process's life
+    }();
+    return *table;
+}
+
+void check(const std::string &error) {
+    if (!error.empty())
+        throw Error(error);
+}
+
+} // namespace
+
+Texture readTexture(const std::filesystem::path &path, TexelMeaning meaning) {
+    Texture texture;
+    check(plugin().readTexture(path, meaning, texture));
+    return texture;
+}
+
+void writeImage(const std::filesystem::path &path, const OutputImage &image,
+                const ImageMetadata &meta) {
+    check(plugin().writeImage(path, image, meta));
+}
+
+LoadedImage readImage(const std::filesystem::path &path) {
+    LoadedImage image;
+    check(plugin().readImage(path, image));
+    return image;
+}
+
+} // namespace prism
