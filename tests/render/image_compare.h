@@ -14,7 +14,7 @@ struct ImageDifference {
     size_t differing = 0;      // pixels whose largest channel difference exceeds the threshold
     double meanAbsolute = 0.0; // over all channels and pixels
     double largest = 0.0;
-    size_t nonFinite = 0;
+    size_t nonFinite = 0; // channels that are NaN or infinite in either image (each differs)
     // The images are not comparable (different or no sizes): every pixel counts as differing,
     // so that an empty or truncated readback fails every bound instead of passing them all.
     bool sizesDiffer = false;
@@ -40,11 +40,18 @@ inline ImageDifference compareImages(const std::vector<float> &a, const std::vec
         double worst = 0.0;
         for (int c = 0; c < 3; ++c) {
             double x = a[p * 4 + c], y = b[p * 4 + c];
+            double diff = std::abs(x - y);
             if (!std::isfinite(x) || !std::isfinite(y)) {
+                // A NaN or infinity is never a match: the pixel differs by any threshold, and
+                // where the other image is finite the mean becomes infinite, failing every bound
+                // on it (a comparison that let a NaN image through was testing nothing).
                 d.nonFinite++;
+                bool oneSided = std::isfinite(x) != std::isfinite(y);
+                worst = HUGE_VAL;
+                if (oneSided)
+                    sum += HUGE_VAL;
                 continue;
             }
-            double diff = std::abs(x - y);
             sum += diff;
             worst = std::max(worst, diff);
         }

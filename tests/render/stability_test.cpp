@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "gpu_fixture.h"
 #include "image_compare.h"
+#include "reference_match.h"
 #include "render_helpers.h"
 #include "test_scenes.h"
 
@@ -36,8 +37,9 @@ Scene manySpheresScene(int far) {
 
 // The same scene at 1e-3, 1 and 1e3 must give the same picture: offsets are relative to |P|,
 // so no acne appears and no contact shadow is lost at any scale. Scaling keeps float's
-// relative precision, so the images match but for 0.5% of pixels (float rounding at
-// silhouettes).
+// relative precision: measured, no pixel differs by more than 0.02. As in the scene regression
+// test (reference_match.h), 2 pixels may flip at a silhouette on another CPU's rounding; a
+// third fails (the bound was 0.5% of the pixels, 34 of them, each as wrong as it liked).
 TEST_F(Stability, SameImageAtEveryScale) {
     const uint32_t w = 96, h = 72;
     Scene base = stabilityScene();
@@ -47,7 +49,7 @@ TEST_F(Stability, SameImageAtEveryScale) {
         ImageDifference d = compareImages(image.rgba, reference.rgba, 0.02);
         SCOPED_TRACE("scale " + std::to_string(scale));
         EXPECT_EQ(d.nonFinite, 0u);
-        EXPECT_LE(d.differingFraction(), 0.005) << describe(d);
+        EXPECT_LE(d.differing, kMatchMaxDifferingPixels) << describe(d);
     }
 }
 
@@ -56,7 +58,8 @@ TEST_F(Stability, SameImageAtEveryScale) {
 // offset starts secondary rays past the objects, so its picture is no longer the unit scene's
 // (measured: 17% of the pixels off by > 0.02, where the relative offset above stays within
 // 0.5%). Moller-Trumbore renders the unit scene, whose rays seldom meet edges exactly, as the
-// watertight test does (measured: no pixel off); where it leaks is studies_quick's to show.
+// watertight test does (measured: no pixel off; 2 may flip, as above); where it leaks is
+// studies_quick's to show.
 TEST_F(Stability, StudiesMethodsFailWhereTheStudiesSay) {
     const uint32_t w = 96, h = 72;
     Scene base = stabilityScene();
@@ -73,15 +76,15 @@ TEST_F(Stability, StudiesMethodsFailWhereTheStudiesSay) {
     TracedImage m = renderGpu(context(), base, w, h, 1, 5, GridOptions{}, mt).image;
     ImageDifference dm = compareImages(m.rgba, reference.rgba, 0.02);
     EXPECT_EQ(dm.nonFinite, 0u);
-    EXPECT_LE(dm.differingFraction(), 0.005) << describe(dm);
+    EXPECT_LE(dm.differing, kMatchMaxDifferingPixels) << describe(dm);
 }
 
 // Moved far from the origin, the scene must look as it does at the origin: the host keeps
 // positions in double and the GPU sees them relative to the camera (scene/scene_origin.h).
 // Without that, floats near 1e4 are 2^-10 apart and 3.7% of pixels moved by > 2/255
 // (silhouettes, reflected and refracted detail); at 1e6 they are 1/16 apart, coarser than the
-// spheres' details. The whole image is compared, no edge left out: at most 0.1% of pixels
-// (6 of 6912) may differ by more than 2/255 (measured: none).
+// spheres' details. The whole image is compared, no edge left out: measured, no pixel differs
+// by more than 2/255; 2 may flip on another CPU's rounding, as above (the bound was 0.1%).
 TEST_F(Stability, SameImageFarFromTheOrigin) {
     const uint32_t w = 96, h = 72;
     Scene base = stabilityScene();
@@ -94,7 +97,7 @@ TEST_F(Stability, SameImageFarFromTheOrigin) {
         SCOPED_TRACE("offset " + std::to_string(offset.x) + " " + std::to_string(offset.y) + " " +
                      std::to_string(offset.z));
         EXPECT_EQ(d.nonFinite, 0u);
-        EXPECT_LE(d.differingFraction(), 0.001) << describe(d);
+        EXPECT_LE(d.differing, kMatchMaxDifferingPixels) << describe(d);
     }
 }
 
@@ -215,7 +218,7 @@ TEST_F(Stability, LoopLimitOverrunIsTracedResumably) {
     }
     EXPECT_EQ(gpu.frame.loopCutPixels, 0u);
     ImageDifference d = compareImages(gpu.image.rgba, renderCpu(scene, 32, 32, 1, 1), 0.02);
-    EXPECT_EQ(d.differing, 0u) << describe(d);
+    EXPECT_LE(d.differing, kMatchMaxDifferingPixels) << describe(d);
 }
 
 // Just under the limit (29,898 spheres: ~59,800 iterations for a lit pixel) nothing is cut,
@@ -226,7 +229,7 @@ TEST_F(Stability, NearTheLoopLimitNothingIsCut) {
     EXPECT_EQ(gpu.frame.loopCutPixels, 0u);
     EXPECT_EQ(gpu.frame.resumeDispatches, 0u);
     ImageDifference d = compareImages(gpu.image.rgba, renderCpu(scene, 32, 32, 1, 1), 0.02);
-    EXPECT_EQ(d.differing, 0u) << describe(d);
+    EXPECT_LE(d.differing, kMatchMaxDifferingPixels) << describe(d);
 }
 
 // The same for the adaptive grid's walk, whose steps look cells up in the voxel map (loops of

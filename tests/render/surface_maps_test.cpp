@@ -141,6 +141,44 @@ TEST_F(SurfaceMaps, BothMapsMatchTheReference) {
     expectChangesThePicture(expectMatchesReference(scene));
 }
 
+// Glass refracts about the shading normal, so smooth and mapped normals bend what is seen
+// through it: the sphere and the smooth octahedron made of glass in front of the mapped floor
+// and wall (each material's own maps), held to the reference with the same tolerance.
+Material glassMaterial() {
+    Material glass = opticalMaterial("glass", 0.1f, 0.85f, 1.5f);
+    glass.specular = 0.4f;
+    glass.shininess = 48.0f;
+    return glass;
+}
+
+Scene glassObjectsScene(const Material &glass) {
+    Scene scene = sceneOf(mappedMaterial());
+    uint32_t g = addMaterial(scene, glass);
+    scene.spheres[0].material = g;
+    for (size_t t = 0; t < 8; ++t) // the octahedron's faces (sceneOf adds them first)
+        scene.triangles[t].material = g;
+    return scene;
+}
+
+TEST_F(SurfaceMaps, SmoothGlassMatchesTheReference) {
+    Scene scene = glassObjectsScene(glassMaterial());
+    ASSERT_TRUE(scene.triangles[0].hasNormals);
+    expectMatchesReference(scene);
+}
+
+TEST_F(SurfaceMaps, BumpMappedGlassMatchesTheReference) {
+    Scene scene = glassObjectsScene(glassMaterial());
+    scene.textures.push_back(rollingHeights());
+    scene.materials[2].bumpMap = 0;
+    scene.materials[2].bumpScale = 0.15f;
+    std::vector<float> bumped = expectMatchesReference(scene);
+    // The bumps must show through the glass: against the unmapped glass, many pixels change.
+    ImageDifference d = compareImages(
+        bumped, renderGpu(context(), glassObjectsScene(glassMaterial()), kWidth, kHeight).image.rgba,
+        kMatchPixelThreshold);
+    EXPECT_GE(d.differingFraction(), 0.05) << describe(d);
+}
+
 // A normal map of (0.5, 0.5, 1) everywhere is the unbent normal (0, 0, 1), and a bump map with
 // multiplier 0 has no slope: the image must be the one without maps, on both backends. Written
 // as a float EXR so that 0.5 is exact (8 bits cannot hold it: 128/255 leans the normal by

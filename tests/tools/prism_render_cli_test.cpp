@@ -277,11 +277,13 @@ TEST_F(PrismRenderCli, ExrPixelsMatchTheCpuReference) {
     size_t differing = 0;
     for (size_t p = 0; p < size_t(32 * 24); ++p)
         for (int ch = 0; ch < 3; ++ch)
-            if (std::abs(g.pixels[p * 4 + ch] - c.pixels[p * 4 + ch]) > 0.02f) {
+            if (!(std::abs(g.pixels[p * 4 + ch] - c.pixels[p * 4 + ch]) <= 0.02f)) { // NaN too
                 ++differing;
                 break;
             }
-    EXPECT_LE(differing, 32u * 24u / 100u) << "more than 1% of pixels differ from the reference";
+    // Measured: none. 2 may flip on another CPU's float rounding, as in the scene regression test
+    // (the bound was 1% of the pixels, 7 of them, each as wrong as it liked).
+    EXPECT_LE(differing, 2u) << "pixels differ from the reference";
     const float *centre = &g.pixels[(12 * 32 + 16) * 4], *corner = &g.pixels[0];
     EXPECT_GT(centre[0], 2.0f * centre[1]) << "the red sphere fills the middle";
     EXPECT_NEAR(corner[0], 0.1f, 1e-6f) << "the background colour in the top corner";

@@ -158,7 +158,10 @@ def main():
     check_files(out / "original", ["data.json", "data.csv", "seed-scenes.png", "resolution.png",
                                    "density-features.png"])
     res = orig["resolution"]
-    check(res[-1]["trace_ms"] > res[0]["trace_ms"], "original: larger frame not slower")
+    # By ray counts, not times: quick mode's frames take a millisecond or two, and a timing
+    # checked in a test fails whenever the machine is busy (it did, under ctest -j2).
+    check(res[-1]["rays"] > res[0]["rays"], "original: larger frame traces no more rays")
+    check(all(r["trace_ms"] > 0 for r in res), "original: a frame without a time")
     rays = {r["variant"]: sum(r["rays"].values()) for r in orig["features"]}
     check(rays["auto"] > rays["no-reflection+no-refraction+no-shadows"],
           "original: switching features off did not remove rays")

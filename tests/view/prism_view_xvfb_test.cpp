@@ -12,6 +12,7 @@
 
 #include "cli_runner.h" // tests/tools
 #include "io/image_reader.h"
+#include "missing_tool.h"
 
 namespace fs = std::filesystem;
 
@@ -53,7 +54,7 @@ class PrismViewXvfb : public ::testing::Test {
 protected:
     void SetUp() override {
         if (!haveXvfbRun())
-            GTEST_SKIP() << "xvfb-run is not installed (Debian: apt install xvfb); CI has it";
+            PRISM_MISSING_TEST_TOOL("xvfb-run is not installed (Debian: apt install xvfb)");
         dir_ = fs::temp_directory_path() /
                ("prism-view-test-" + std::to_string(::getpid()) + "-" +
                 ::testing::UnitTest::GetInstance()->current_test_info()->name());

@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "core/median.h"
 #include "embree_baseline.h"
+#include "tool_environment.h"
 
 using namespace prism;
 
@@ -218,6 +219,10 @@ int main(int argc, char **argv) {
                  "on a noisy machine");
     app.add_option("--json", jsonPath, "Also write every result (all frame times) as JSON");
     app.add_option("--device", deviceFilter, "First Vulkan device whose name contains this");
+    bool validation = false;
+    app.add_flag("--validation", validation,
+                 "Enable Vulkan validation layers (also PRISM_VALIDATION=1); any message fails "
+                 "the run. Timings under validation are not comparable with others");
     CLI11_PARSE(app, argc, argv);
     try {
         unsigned w = 0, h = 0;
@@ -239,6 +244,7 @@ int main(int argc, char **argv) {
         vk::ContextOptions contextOptions;
         contextOptions.deviceNameFilter = deviceFilter;
         contextOptions.shaderClock = settings.profile;
+        contextOptions.validation = validationWanted(validation);
         vk::Context context(contextOptions);
         std::vector<BenchResult> results =
             runStudy(context, scenes, variants, settings, [](const std::string &what) {
@@ -246,6 +252,11 @@ int main(int argc, char **argv) {
                 std::fflush(stderr);
             });
         std::fprintf(stderr, "\n");
+        // Every variant, the profiling shader included, ran under the layers when asked: a
+        // message fails the run rather than printing timings of a frame the device misread.
+        if (context.validationMessageCount() > 0)
+            throw Error(std::to_string(context.validationMessageCount()) +
+                        " Vulkan validation messages (printed above)");
         printTable(results, settings, context.deviceName());
         std::vector<SceneRatio> ratios;
         if (settings.interleaveScenes && !results.empty()) {

@@ -14,6 +14,7 @@ packages=(
     libembree-dev # only prism-gridbench's baseline: Prism builds without it
     slurm-wlm munge parallel # tools/farm: its tests start a local Slurm, and run GNU parallel
     pybind11-dev python3-dev python3-pytest # python/: `import prism` and its tests
+    clang libclang-rt-14-dev # the fuzz preset (libFuzzer) that CI replays (tools/scripts/fuzz.sh)
     # xauth: xvfb-run (the prism-view tests) needs it; xvfb only recommends it
 )
 missing=()

@@ -2,7 +2,11 @@
 """The seeded-bug list of tools/scripts/mutants.sh: parsing, checking and applying it.
 
     mutants.py check LIST ROOT          every entry applies to the tree at ROOT (exit 1 if not)
-    mutants.py ids LIST [ID,...]        "id<TAB>description" of every (or each named) entry
+    mutants.py ids LIST [ID,...]        "id US targets US labels US tests US description" of every
+                                        (or each named) entry, US the ASCII unit separator (a tab
+                                        would let bash's read merge empty fields); the middle
+                                        three are the entry's own selection, empty where it has
+                                        none
     mutants.py apply LIST ID ROOT SAVE  seeds entry ID into ROOT, saving the files it edits in SAVE
     mutants.py revert ROOT SAVE         puts the files saved in SAVE back into ROOT
     mutants.py sync SRC DST             makes DST a copy of the files SRC lists on stdin (NUL-
@@ -18,7 +22,10 @@ import shutil
 import sys
 import tempfile
 
-KEYS = ("id", "desc", "file", "from", "to")
+KEYS = ("id", "desc", "targets", "labels", "tests", "file", "from", "to")
+# An entry's own selection (mutants.sh uses its defaults where an entry gives none): the build
+# targets that hold its tests, and ctest's -L and -R regexes that pick them.
+SELECTION = ("targets", "labels", "tests")
 
 
 class ListError(Exception):
@@ -26,7 +33,8 @@ class ListError(Exception):
 
 
 def parse(path):
-    """Entries as dicts {id, desc, edits: [(file, from, to)], line}, in list order."""
+    """Entries as dicts {id, desc, targets, labels, tests, edits: [(file, from, to)], line}, in
+    list order."""
     entries, current, pending = [], None, {}
 
     def finish(lineno):
@@ -61,12 +69,22 @@ def parse(path):
             finish(lineno)
             if not re.fullmatch(r"[A-Za-z0-9][A-Za-z0-9_-]*", value):
                 raise ListError(f"{path}:{lineno}: id {value!r}: letters, digits, '-' and '_'")
-            current = {"id": value, "desc": "", "edits": [], "line": lineno}
+            current = {"id": value, "desc": "", "edits": [], "line": lineno,
+                       "targets": "", "labels": "", "tests": ""}
             continue
         if current is None:
             raise ListError(f"{path}:{lineno}: '{key}:' before any 'id:'")
         if key == "desc":
             current["desc"] = value.strip()
+        elif key in SELECTION:
+            if current["edits"] or pending:
+                raise ListError(f"{path}:{lineno}: '{key}:' must come before the entry's edits")
+            if not value.strip() or "\t" in value:
+                raise ListError(f"{path}:{lineno}: '{key}:' needs a value (no tabs)")
+            if key == "targets" and not re.fullmatch(r"[A-Za-z0-9_.-]+(,[A-Za-z0-9_.-]+)*",
+                                                     value.strip()):
+                raise ListError(f"{path}:{lineno}: targets: comma-separated target names")
+            current[key] = value.strip()
         elif key == "file":
             if pending:
                 raise ListError(f"{path}:{lineno}: 'file:' before the previous edit's 'to:'")
@@ -198,6 +216,10 @@ def selftest():
         expect(check_list(entry.replace("a.txt", "b.txt").format("z", "y")), "no such file")
         expect(check_list(entry.format("z", "y") + "\n" + entry.format("x", "w")), "duplicate id")
         expect(check_list("id: m\nfile: a.txt\nfrom: z\nto: y\n"), "an entry without desc")
+        own = "id: m\ndesc: d\ntargets: a_tests,b_tests\ntests: ^A\\.\nfile: a.txt\nfrom: z\nto: y\n"
+        expect(check_list(own) == [], "an entry with its own targets and tests is refused")
+        expect(check_list(own.replace("a_tests,b_tests", "a tests")), "a bad target list")
+        expect(check_list(entry.format("z", "y") + "labels: cpu\n"), "a selection after the edits")
         path = os.path.join(tmp, "list.txt")
         with open(path, "w") as f:
             f.write(entry.format("z = 2;", "z = 3;"))
@@ -226,7 +248,7 @@ def main(argv):
             return 0
         if len(argv) in (2, 3) and argv[0] == "ids":
             for e in select(parse(argv[1]), argv[2] if len(argv) == 3 else ""):
-                print(f"{e['id']}\t{e['desc']}")
+                print("\x1f".join([e["id"], e["targets"], e["labels"], e["tests"], e["desc"]]))
             return 0
         if len(argv) == 5 and argv[0] == "apply":
             entry = select(parse(argv[1]), argv[2])[0]

@@ -21,10 +21,14 @@ only=""
 # shading, intersection or traversal and cost time: the lavapipe loop-limit tests (30,000
 # spheres without a grid), buffer limits and packing, the compile dispatch, the comparison
 # helpers. New tests in those two binaries join the selection by themselves.
-labels='^(reference|render)$'
-exclude='LoopCut|LoopLimit|Oversized|TexelAndStorage|CompileDispatch|LargeScene|ScenePacking|TracerFeatures|FrameParams|ImageCompare'
-tests=''
-targets=reference_tests,render_tests
+# An entry may name its own selection instead (targets:, labels:, tests: in the list), for code
+# that only other tests can see (scene reading, the grid cache, the tools); --tests and --targets
+# on the command line override every entry's.
+default_labels='^(reference|render)$'
+default_exclude='LoopCut|LoopLimit|Oversized|TexelAndStorage|CompileDispatch|LargeScene|ScenePacking|TracerFeatures|FrameParams|ImageCompare'
+default_targets=reference_tests,render_tests
+cli_tests='' cli_targets=''
+labels='' exclude='' tests='' targets=$default_targets
 jobs=$(nproc)
 stop=''
 
@@ -37,10 +41,12 @@ options:
   --only ID,...    only these mutants, in this order
   --build-dir DIR  scratch folder for the copy (DIR/src) and its build (DIR/build), logs in
                    DIR/logs (default build-mutants/, which git ignores)
-  --tests REGEX    ctest -R selection instead of the default (labels reference and render,
+  --tests REGEX    ctest -R selection for every entry, instead of each entry's own (its
+                   tests: and labels: lines) or the default (labels reference and render,
                    less the tests that cannot see a shading bug; see the top of this script)
-  --targets T,...  what to build before the tests (default $targets);
-                   they must hold the tests that --tests selects
+  --targets T,...  what to build before the tests, for every entry (default: the entry's
+                   targets: line, else $default_targets);
+                   they must hold the tests that are selected
   --stop-on-failure
                    stop a mutant's tests at its first failing test: quicker, but the report
                    names only the tests that had failed by then
@@ -58,8 +64,8 @@ while [ $# -gt 0 ]; do
     --list) [ $# -ge 2 ] || die "--list needs a file"; list=$(realpath "$2"); shift 2 ;;
     --only) [ $# -ge 2 ] || die "--only needs ids"; only=$2; shift 2 ;;
     --build-dir) [ $# -ge 2 ] || die "--build-dir needs a folder"; work=$(realpath -m "$2"); shift 2 ;;
-    --tests) [ $# -ge 2 ] || die "--tests needs a regex"; tests=$2; labels='' exclude=''; shift 2 ;;
-    --targets) [ $# -ge 2 ] || die "--targets needs targets"; targets=$2; shift 2 ;;
+    --tests) [ $# -ge 2 ] || die "--tests needs a regex"; cli_tests=$2; shift 2 ;;
+    --targets) [ $# -ge 2 ] || die "--targets needs targets"; cli_targets=$2; shift 2 ;;
     --stop-on-failure) stop=--stop-on-failure; shift ;;
     -j) [ $# -ge 2 ] && [[ $2 =~ ^[1-9][0-9]*$ ]] || die "-j needs a number"; jobs=$2; shift 2 ;;
     -h | --help) usage; exit 0 ;;
@@ -121,6 +127,21 @@ run_tests() { # log file
     return $status
 }
 
+# Sets targets, labels, tests and exclude for an entry's fields (its own selection, or the
+# defaults), the command line's --tests and --targets first.
+select_for() { # entry-targets entry-labels entry-tests
+    targets=${cli_targets:-${1:-$default_targets}}
+    if [ -n "$cli_tests" ]; then
+        tests=$cli_tests labels='' exclude=''
+    elif [ -n "$3" ]; then
+        tests=$3 labels=$2 exclude=''
+    elif [ -n "$2" ]; then # by label: less the slow tests that cannot see a bug, as by default
+        tests='' labels=$2 exclude=$default_exclude
+    else
+        tests='' labels=$default_labels exclude=$default_exclude
+    fi
+}
+
 start=$SECONDS
 echo "mutants: ${#entries[@]} mutant(s) from ${list#"$repo"/}; scratch copy in $work"
 if [ ! -f "$build/CMakeCache.txt" ]; then
@@ -128,21 +149,34 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
     cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release > "$logs/configure.log" 2>&1 ||
         die "configure failed: $logs/configure.log"
 fi
-echo "mutants: building the unmutated tree ($targets)"
-build_targets "$logs/baseline.build.log" || die "the unmutated tree does not build: $logs/baseline.build.log"
-t0=$SECONDS
-if ! failed=$(run_tests "$logs/baseline.test.log"); then
-    echo "$failed" | sed 's/^/  /' >&2
-    die "tests fail without any mutant: fix them first ($logs/baseline.test.log)"
-fi
-count=$(grep -Eo 'out of [0-9]+' "$logs/baseline.test.log" | grep -Eo '[0-9]+' || echo "the")
-echo "mutants: baseline: $count selected tests pass in $((SECONDS - t0)) s; now each mutant"
+# The unmutated tree must build and pass each distinct selection the entries use.
+declare -A baselines=()
+for entry in "${entries[@]}"; do
+    IFS=$'\x1f' read -r _id etargets elabels etests _desc <<< "$entry"
+    select_for "$etargets" "$elabels" "$etests"
+    key="$targets|$labels|$tests"
+    [ -n "${baselines[$key]:-}" ] && continue
+    baselines[$key]=1
+    b=${#baselines[@]}
+    echo "mutants: baseline $b: building $targets; tests ${tests:+-R $tests }${labels:+-L $labels}"
+    build_targets "$logs/baseline$b.build.log" ||
+        die "the unmutated tree does not build: $logs/baseline$b.build.log"
+    t0=$SECONDS
+    if ! failed=$(run_tests "$logs/baseline$b.test.log"); then
+        echo "$failed" | sed 's/^/  /' >&2
+        die "tests fail without any mutant: fix them first ($logs/baseline$b.test.log)"
+    fi
+    count=$(grep -Eo 'out of [0-9]+' "$logs/baseline$b.test.log" | grep -Eo '[0-9]+' || echo "the")
+    echo "mutants: baseline $b: $count selected tests pass in $((SECONDS - t0)) s"
+done
+echo "mutants: now each mutant"
 
 declare -a rows=()
 missed=() broken=()
 n=0
 for entry in "${entries[@]}"; do
-    id=${entry%%$'\t'*}
+    IFS=$'\x1f' read -r id etargets elabels etests _desc <<< "$entry"
+    select_for "$etargets" "$elabels" "$etests"
     n=$((n + 1))
     t0=$SECONDS
     printf '[%2d/%d] %-30s ' "$n" "${#entries[@]}" "$id"
