@@ -61,7 +61,9 @@ public:
         std::vector<T> v;
         reserveInHugePages(v, size_t(count));
         v.resize(size_t(count));
-        std::memcpy(v.data(), take(size_t(count) * sizeof(T)), size_t(count) * sizeof(T));
+        const char *from = take(size_t(count) * sizeof(T));
+        if (count > 0) // an empty vector's data() may be null, which memcpy must not be given
+            std::memcpy(v.data(), from, size_t(count) * sizeof(T));
         return v;
     }
     std::string text() {
