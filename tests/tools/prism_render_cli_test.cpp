@@ -34,7 +34,7 @@ TEST_F(PrismRenderCli, HelpListsEveryOption) {
     CliResult r = run("--help");
     EXPECT_EQ(r.exitCode, 0);
     for (const char *option : {"--size", "--spp", "--depth", "--grid", "--aov", "--backend",
-                               "--repeat", "--stats", "--quiet", "--show-tiles"})
+                               "--runs", "--repeat", "--stats", "--quiet", "--show-tiles"})
         EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
 
@@ -68,8 +68,8 @@ TEST_F(PrismRenderCli, BadOptionsFailClearly) {
     for (const char *bad : {" --size 8by8", " --grid 0", " --grid 2x2", " --spp 0",
                             " --backend metal", " --aov depth", " --grid-density 0"}) {
         CliResult r = run(base + bad);
-        EXPECT_NE(r.exitCode, 0) << bad;
-        EXPECT_FALSE(r.out.empty()) << bad;
+        EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.out; // a usage error
+        EXPECT_EQ(r.out.rfind("prism-render: error: ", 0), 0u) << bad << ": " << r.out;
     }
     CliResult wrongExt = run(scene.string() + " -o " + (dir() / "out.jpg").string());
     EXPECT_NE(wrongExt.exitCode, 0);

@@ -121,7 +121,7 @@ TEST_F(PrismRenderFrames, BadRangesAndPatternsFailBeforeAnyWork) {
              {"--frames x" + exr, "is not a frame"},
              {"--frames 1-3 -o " + (dir() / "t.exr").string(), "names no frame"},
              {"--frames 1-3 -o " + (dir() / "t.##.##.exr").string(), "two runs of '#'"},
-             {"--frames 1-3 --repeat 3" + exr, "--repeat times one frame"},
+             {"--frames 1-3 --runs 3" + exr, "--runs times one frame"},
          }) {
         CliResult r = render(c.args);
         EXPECT_NE(r.exitCode, 0) << c.args;

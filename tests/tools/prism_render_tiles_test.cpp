@@ -147,8 +147,8 @@ TEST_F(PrismRenderTiles, CropAndPixelBoundsWriteThePartInItsPlace) {
     EXPECT_EQ(cpuPart.x * 100 + cpuPart.y, 3 * 100 + 40);
     EXPECT_EQ(cpuPart.width * 100 + cpuPart.height, 6 * 100 + 8);
     // A PNG holds the part alone.
-    ASSERT_EQ(render("--crop 0,0.5,0,0.5 -o " + path("crop.png")).exitCode, 1)
-        << "--aov needs an EXR";
+    ASSERT_EQ(render("--crop 0,0.5,0,0.5 -o " + path("crop.png")).exitCode, 2)
+        << "--aov needs an EXR: a usage error";
     CliResult png = prism::test::runTool(
         PRISM_RENDER_EXE, std::string(PRISM_SCENES_DIR) +
                               "/showcase.scene --size 64x48 --quiet --crop 0,0.5,0,0.5 -o " +
@@ -177,7 +177,8 @@ TEST_F(PrismRenderTiles, BadRegionsAreRefusedBeforeAnyWork) {
          }) {
         SCOPED_TRACE(c.args);
         CliResult r = render(c.args + " -o " + path("x{tile}.exr"));
-        EXPECT_EQ(r.exitCode, 1);
+        EXPECT_EQ(r.exitCode, 2); // a usage error
+        EXPECT_EQ(r.out.rfind("prism-render: error: ", 0), 0u) << r.out;
         EXPECT_NE(r.out.find(c.message), std::string::npos) << r.out;
     }
     CliResult png = prism::test::runTool(PRISM_RENDER_EXE, std::string(PRISM_SCENES_DIR) +

@@ -51,7 +51,7 @@ def check_files(folder, names):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--bin", required=True)
     parser.add_argument("--out", required=True)
     args = parser.parse_args()

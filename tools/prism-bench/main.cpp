@@ -12,6 +12,7 @@
 
 #include "bench_profile.h"
 #include "bench_study.h"
+#include "command_line.h"
 #include "core/error.h"
 #include "core/median.h"
 #include "embree_baseline.h"
@@ -223,24 +224,26 @@ int main(int argc, char **argv) {
     app.add_flag("--validation", validation,
                  "Enable Vulkan validation layers (also PRISM_VALIDATION=1); any message fails "
                  "the run. Timings under validation are not comparable with others");
-    CLI11_PARSE(app, argc, argv);
+    std::vector<BenchVariant> variants;
+    if (auto status = parseCommandLine("prism-bench", app, argc, argv, [&] {
+            unsigned w = 0, h = 0;
+            char x = 0;
+            std::istringstream in(size);
+            if (!(in >> w >> x >> h) || x != 'x' || w == 0 || h == 0 || !in.eof())
+                throw Error("--size " + size + ": expected WxH, e.g. 1024x768");
+            settings.width = w;
+            settings.height = h;
+            settings.embreeBaseline = baseline == "embree";
+            for (const std::string &v : splitList(variantList))
+                variants.push_back(parseBenchVariant(v));
+            if (variants.empty())
+                throw Error("--variants: no variant given");
+        }))
+        return *status;
     try {
-        unsigned w = 0, h = 0;
-        char x = 0;
-        std::istringstream in(size);
-        if (!(in >> w >> x >> h) || x != 'x' || w == 0 || h == 0 || !in.eof())
-            throw Error("--size " + size + ": expected WxH, e.g. 1024x768");
-        settings.width = w;
-        settings.height = h;
-        settings.embreeBaseline = baseline == "embree";
         if (settings.embreeBaseline && !embreeAvailable())
             throw Error("--baseline embree: prism-bench was built without Embree (install "
                         "libembree-dev with tools/scripts/install-deps.sh and reconfigure)");
-        std::vector<BenchVariant> variants;
-        for (const std::string &v : splitList(variantList))
-            variants.push_back(parseBenchVariant(v));
-        if (variants.empty())
-            throw Error("--variants: no variant given");
         vk::ContextOptions contextOptions;
         contextOptions.deviceNameFilter = deviceFilter;
         contextOptions.shaderClock = settings.profile;
@@ -290,7 +293,7 @@ int main(int argc, char **argv) {
             std::rename(tmp.c_str(), jsonPath.c_str());
         }
     } catch (const std::exception &e) {
-        std::fprintf(stderr, "prism-bench: %s\n", e.what());
+        std::fprintf(stderr, "prism-bench: error: %s\n", e.what());
         return 1;
     }
     return 0;

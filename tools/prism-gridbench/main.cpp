@@ -13,6 +13,7 @@
 
 #include "accel/grid.h"
 #include "accel/walk_counts.h"
+#include "command_line.h"
 #include "core/error.h"
 #include "core/median.h"
 #include "core/parallel_for.h"
@@ -178,7 +179,12 @@ int main(int argc, char **argv) {
         ->check(CLI::Range(1u, 1024u));
     app.add_flag("--no-embree", noEmbree, "Leave Embree's build out");
     app.add_option("--json", jsonPath, "Also write every result (all build times) as JSON");
-    CLI11_PARSE(app, argc, argv);
+    if (auto status = parseCommandLine("prism-gridbench", app, argc, argv, [&] {
+            std::stringstream list(gridList);
+            for (std::string g; std::getline(list, g, ',');)
+                parseGridOption(g); // a bad value is a usage error, before any work
+        }))
+        return *status;
     ParallelThreads threadLimit(threads);
     try {
         std::vector<std::string> grids;
@@ -206,7 +212,7 @@ int main(int argc, char **argv) {
             std::ofstream(jsonPath) << all.dump(2) << "\n";
         }
     } catch (const std::exception &e) {
-        std::fprintf(stderr, "prism-gridbench: %s\n", e.what());
+        std::fprintf(stderr, "prism-gridbench: error: %s\n", e.what());
         return 1;
     }
     return 0;

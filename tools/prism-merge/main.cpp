@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "command_line.h"
 #include "core/error.h"
 #include "tile_merge.h"
 
@@ -28,11 +29,8 @@ int run(int argc, char **argv) {
                    "The whole image: .exr (every channel of the tiles) or .png (colour, sRGB)")
         ->required();
     app.add_flag("--quiet", quiet, "No summary line on stderr");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError &e) {
-        return app.exit(e);
-    }
+    if (auto status = prism::parseCommandLine("prism-merge", app, argc, argv))
+        return *status;
     std::vector<std::filesystem::path> paths(tiles.begin(), tiles.end());
     std::error_code ec;
     for (const std::filesystem::path &p : paths)

@@ -85,7 +85,7 @@ FrameOutcome VulkanFrameSource::render(const Camera &camera, const std::string &
                                        const std::string &after, ProgressLine &progress) {
     FrameOutcome out;
     Timer phase;
-    // Timing several frames (--repeat) also gets a warm-up frame, so that they are alike
+    // Timing several frames (--runs) also gets a warm-up frame, so that they are alike
     // (caches, clocks); a single render does not pay a second frame for that.
     for (uint32_t frame = o_.repeat > 1 ? 0 : 1; frame <= o_.repeat; ++frame) {
         std::string text = frame == 0 ? label + " warm-up"

@@ -3,10 +3,12 @@
 #include <array>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
 #include "cache/disk_cache.h"
+#include "command_line.h"
 #include "core/error.h"
 #include "frame_range.h"
 #include "render/image_region.h"
@@ -162,9 +164,10 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
                    "reference)")
         ->check(CLI::IsMember({"vulkan", "cpu"}))
         ->default_val("vulkan");
-    app.add_option(
-           "--repeat", options.repeat,
-           "Timed frames after one warm-up frame of 1 sample per pixel (trace_ms is the best)")
+    // --runs, as prism-bench and prism-gridbench name it; --repeat is kept for older scripts.
+    app.add_option("--runs,--repeat", options.repeat,
+                   "Timed frames (trace_ms is the best); with more than 1, an untimed warm-up "
+                   "frame of 1 sample per pixel goes first so that they are alike")
         ->check(CLI::Range(1u, 10000u))
         ->default_val(1);
     app.add_flag("--stats", options.stats, "Print one JSON line of timings and ray counts");
@@ -184,53 +187,54 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
     app.add_flag("--no-cache", options.noCache,
                  "Build the grid without reading or writing the "
                  "cache");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError &e) {
-        exitCode = app.exit(e);
+    // Everything below checks the values given: a bad one is a usage error (exit 2).
+    std::optional<int> status = parseCommandLine("prism-render", app, argc, argv, [&] {
+        options.scenePath = scene;
+        options.outputPath = output;
+        ImageSize parsed = parseSizeOption(size);
+        options.width = parsed.width;
+        options.height = parsed.height;
+        options.grid = parseGridOption(options.gridText);
+        options.grid.density = density;
+        if (!aov.empty())
+            parseAovs(aov, options);
+        options.backend = backend == "cpu" ? Backend::Cpu : Backend::Vulkan;
+        std::string ext = lowerExtension(options.outputPath);
+        if (ext != ".exr" && ext != ".png")
+            throw Error("output " + output + ": unsupported extension; use .exr or .png");
+        if (options.showTiles && options.backend == Backend::Cpu)
+            throw Error("--show-tiles shows the Vulkan tracer's tiles; the cpu backend has none");
+        if ((options.aovDepth || options.aovNormal) && ext != ".exr")
+            throw Error("--aov needs an .exr output (PNG holds colour only)");
+        if (options.noCache && !cacheDir.empty())
+            throw Error("--cache and --no-cache cannot be given together");
+        options.cacheDir =
+            cacheDir.empty() ? DiskCache::defaultDirectory() : std::filesystem::path(cacheDir);
+        if (framesOption->count() > 0) {
+            options.frames = parseFrameList(frames);
+            if (options.frames.size() > 1 && !hasFrameField(output))
+                throw Error("output " + output + " names no frame, but --frames gives " +
+                            std::to_string(options.frames.size()) +
+                            "; put #### or {frame} in it (e.g. out/shot.####.exr)");
+            hasFrameField(output); // an ambiguous pattern is an error even for one frame
+            if (options.repeat > 1 && options.frames.size() > 1)
+                throw Error("--runs times one frame over and over; give --frames a single frame "
+                            "with it, not " +
+                            std::to_string(options.frames.size()));
+        }
+        parseRegion(crop, pixelBounds, tile, options);
+        if (options.tileCount > 0 && ext != ".exr")
+            throw Error("--tile needs an .exr output: its data window keeps the tile's place for "
+                        "prism-merge (PNG cannot)");
+        if (output.find("{tile}") != std::string::npos && options.tileCount == 0)
+            throw Error("output " + output + " names a {tile}, but no --tile is given");
+        options.validation = validationWanted(options.validation);
+        options.commandLine = commandLineText(argc, argv);
+    });
+    if (status) {
+        exitCode = *status;
         return false;
     }
-    options.scenePath = scene;
-    options.outputPath = output;
-    ImageSize parsed = parseSizeOption(size);
-    options.width = parsed.width;
-    options.height = parsed.height;
-    options.grid = parseGridOption(options.gridText);
-    options.grid.density = density;
-    if (!aov.empty())
-        parseAovs(aov, options);
-    options.backend = backend == "cpu" ? Backend::Cpu : Backend::Vulkan;
-    std::string ext = lowerExtension(options.outputPath);
-    if (ext != ".exr" && ext != ".png")
-        throw Error("output " + output + ": unsupported extension; use .exr or .png");
-    if (options.showTiles && options.backend == Backend::Cpu)
-        throw Error("--show-tiles shows the Vulkan tracer's tiles; the cpu backend has none");
-    if ((options.aovDepth || options.aovNormal) && ext != ".exr")
-        throw Error("--aov needs an .exr output (PNG holds colour only)");
-    if (options.noCache && !cacheDir.empty())
-        throw Error("--cache and --no-cache cannot be given together");
-    options.cacheDir =
-        cacheDir.empty() ? DiskCache::defaultDirectory() : std::filesystem::path(cacheDir);
-    if (framesOption->count() > 0) {
-        options.frames = parseFrameList(frames);
-        if (options.frames.size() > 1 && !hasFrameField(output))
-            throw Error("output " + output + " names no frame, but --frames gives " +
-                        std::to_string(options.frames.size()) +
-                        "; put #### or {frame} in it (e.g. out/shot.####.exr)");
-        hasFrameField(output); // an ambiguous pattern is an error even for one frame
-        if (options.repeat > 1 && options.frames.size() > 1)
-            throw Error("--repeat times one frame over and over; give --frames a single frame "
-                        "with it, not " +
-                        std::to_string(options.frames.size()));
-    }
-    parseRegion(crop, pixelBounds, tile, options);
-    if (options.tileCount > 0 && ext != ".exr")
-        throw Error("--tile needs an .exr output: its data window keeps the tile's place for "
-                    "prism-merge (PNG cannot)");
-    if (output.find("{tile}") != std::string::npos && options.tileCount == 0)
-        throw Error("output " + output + " names a {tile}, but no --tile is given");
-    options.validation = validationWanted(options.validation);
-    options.commandLine = commandLineText(argc, argv);
     return true;
 }
 

@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "command_line.h"
 #include "core/error.h"
 #include "generators.h"
 #include "scene_text.h"
@@ -125,11 +126,8 @@ int runScenegen(int argc, char **argv) {
         ->default_val(bunnyPath);
     addOutput(objectsCmd);
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError &e) {
-        return app.exit(e);
-    }
+    if (auto status = parseCommandLine("prism-scenegen", app, argc, argv))
+        return *status;
 
     std::string text;
     if (randomCmd->parsed()) {

@@ -1,9 +1,11 @@
 #include "view_options.h"
 
 #include <cstdlib>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
+#include "command_line.h"
 #include "core/error.h"
 #include "size_option.h"
 #include "tool_environment.h"
@@ -60,28 +62,29 @@ bool parseViewOptions(int argc, char **argv, ViewOptions &options, ViewScript &s
     app.add_option("--device", options.deviceFilter,
                    "Use the first Vulkan device whose name contains this text");
     ViewScriptOptions scriptOptions(app); // for tests and soak runs; not in --help
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError &e) {
-        exitCode = app.exit(e);
+    // Everything below checks the values given: a bad one is a usage error (exit 2).
+    std::optional<int> status = parseCommandLine("prism-view", app, argc, argv, [&] {
+        options.scenePath = scene;
+        ImageSize parsed = parseSizeOption(size);
+        options.width = parsed.width;
+        options.height = parsed.height;
+        options.grid = parseGridOption(grid);
+        options.grid.density = density;
+        options.vsync = vsync == "on" && options.benchmarkFrames == 0;
+        if (motionScale != "auto") {
+            if (motionScale.empty() || motionScale.size() > 1 || motionScale[0] < '1' ||
+                motionScale[0] > '8')
+                throw Error("--motion-scale takes auto or 1..8, got \"" + motionScale + "\"");
+            options.motionScale = uint32_t(motionScale[0] - '0');
+        }
+        script = scriptOptions.script();
+        options.validation = validationWanted(options.validation);
+        options.commandLine = commandLineText(argc, argv);
+    });
+    if (status) {
+        exitCode = *status;
         return false;
     }
-    options.scenePath = scene;
-    ImageSize parsed = parseSizeOption(size);
-    options.width = parsed.width;
-    options.height = parsed.height;
-    options.grid = parseGridOption(grid);
-    options.grid.density = density;
-    options.vsync = vsync == "on" && options.benchmarkFrames == 0;
-    if (motionScale != "auto") {
-        if (motionScale.empty() || motionScale.size() > 1 || motionScale[0] < '1' ||
-            motionScale[0] > '8')
-            throw Error("--motion-scale takes auto or 1..8, got \"" + motionScale + "\"");
-        options.motionScale = uint32_t(motionScale[0] - '0');
-    }
-    script = scriptOptions.script();
-    options.validation = validationWanted(options.validation);
-    options.commandLine = commandLineText(argc, argv);
     return true;
 }
 

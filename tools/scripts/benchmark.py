@@ -25,7 +25,7 @@ ORIGINAL = {  # scene: (primitives, CPU s, GPU s)
 
 def main() -> int:
     root = Path(__file__).resolve().parents[2]
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--bin", default=str(root / "build" / "bin"))
     parser.add_argument("--size", default="1024x768")
     parser.add_argument("--repeat", type=int, default=5)

@@ -80,7 +80,7 @@ def ratio(a, b):
 
 def main() -> int:
     root = Path(__file__).resolve().parents[2]
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--bin", default=str(root / "build" / "bin"))
     parser.add_argument("--rungs", default="100000,1000000,4000000")
     parser.add_argument("--kinds", default="tori,sphere-mesh")

@@ -35,7 +35,7 @@ def fail(message):
 
 
 def parse_args():
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     p.add_argument("scene", nargs="?", help="scene file")
     p.add_argument("--selftest", action="store_true",
                    help="check the analysis on a made-up listing (no perf needed) and exit")
