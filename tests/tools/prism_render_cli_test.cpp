@@ -325,4 +325,22 @@ TEST_F(PrismRenderCli, FarFromTheOriginRendersAsAtTheOrigin) {
     }
 }
 
+// Progress where stderr is a file (a farm's log): one final line with the time taken, never a
+// carriage return; none at all under --quiet. The CPU backend at this size takes seconds, past
+// the one second before progress shows (measured: 5 s with the other core busy).
+TEST_F(PrismRenderCli, ProgressInALogIsOneFinalLine) {
+    std::string scene = std::string(PRISM_SCENES_DIR) + "/showcase.scene";
+    std::string out = " -o " + (dir() / "p.png").string() + " --size 64x48 --backend cpu";
+    CliResult r = run(scene + out);
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_EQ(r.out.find('\r'), std::string::npos) << r.out;
+    size_t first = r.out.find("prism-render: frame 1/1 100%");
+    ASSERT_NE(first, std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("prism-render: frame", first + 1), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("elapsed", first), std::string::npos) << r.out;
+    CliResult quiet = run(scene + out + " --quiet");
+    ASSERT_EQ(quiet.exitCode, 0) << quiet.out;
+    EXPECT_EQ(quiet.out.find("prism-render:"), std::string::npos) << quiet.out;
+}
+
 } // namespace

@@ -28,6 +28,21 @@
 #include "session/render_stats.h"
 
 namespace prism {
+
+// "1m05s", "12s", "0.4s": how long a progress line says is left (progress_line.h).
+std::string durationText(double seconds) {
+    char text[32];
+    if (seconds < 10.0)
+        std::snprintf(text, sizeof text, "%.1fs", seconds);
+    else if (seconds < 60.0)
+        std::snprintf(text, sizeof text, "%.0fs", seconds);
+    else if (seconds < 3600.0)
+        std::snprintf(text, sizeof text, "%dm%02ds", int(seconds) / 60, int(seconds) % 60);
+    else
+        std::snprintf(text, sizeof text, "%dh%02dm", int(seconds) / 3600, int(seconds) / 60 % 60);
+    return text;
+}
+
 namespace {
 
 // One image of the run: a frame of the scene's animation and the file it goes to.
@@ -56,19 +71,6 @@ std::vector<FrameJob> frameJobs(const RenderOptions &o, size_t &skipped) {
     return jobs;
 }
 
-// "1m05s", "12s", "0.4s": how long a progress line says is left.
-std::string durationText(double seconds) {
-    char text[32];
-    if (seconds < 10.0)
-        std::snprintf(text, sizeof text, "%.1fs", seconds);
-    else if (seconds < 60.0)
-        std::snprintf(text, sizeof text, "%.0fs", seconds);
-    else if (seconds < 3600.0)
-        std::snprintf(text, sizeof text, "%dm%02ds", int(seconds) / 60, int(seconds) % 60);
-    else
-        std::snprintf(text, sizeof text, "%dh%02dm", int(seconds) / 3600, int(seconds) / 60 % 60);
-    return text;
-}
 
 // What each frame of a range cost (--stats "per_frame").
 struct FrameRecord {
