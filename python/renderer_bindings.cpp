@@ -47,8 +47,9 @@ public:
         if (width == 0 || height == 0 || width > 16384 || height > 16384)
             throw py::value_error("width and height must be 1 to 16384, got " +
                                   std::to_string(width) + "x" + std::to_string(height));
-        if (spp == 0 || spp > 65536)
-            throw py::value_error("spp must be 1 to 65536, got " + std::to_string(spp));
+        if (spp == 0 || spp > kMaxSamplesPerPixel)
+            throw py::value_error("spp must be 1 to " + std::to_string(kMaxSamplesPerPixel) +
+                                  ", got " + std::to_string(spp));
         if (depth == 0 || depth > 16)
             throw py::value_error("depth must be 1 to 16, got " + std::to_string(depth));
         if (seed > gpu::kMaxSeed)

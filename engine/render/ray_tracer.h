@@ -24,6 +24,10 @@
 
 namespace prism {
 
+// The most samples per pixel any front end accepts (prism-render, prism-view, prism-bench, the
+// Python module): the same limit everywhere, well past where an image stops changing.
+constexpr uint32_t kMaxSamplesPerPixel = 65536;
+
 struct FrameResult {
     double gpuMs = 0.0; // from GPU timestamps, all sample dispatches of the frame
     // From the host's clock: recording the frame's commands (the tile lists and their start

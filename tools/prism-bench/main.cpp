@@ -16,6 +16,7 @@
 #include "core/error.h"
 #include "core/median.h"
 #include "embree_baseline.h"
+#include "render/ray_tracer.h"
 #include "tool_environment.h"
 
 using namespace prism;
@@ -169,7 +170,7 @@ int main(int argc, char **argv) {
     app.add_option("SCENES", scenes, "Scene files")->required()->check(CLI::ExistingFile);
     app.add_option("--size", size, "Image size WxH")->default_val(size);
     app.add_option("--spp", settings.samplesPerPixel, "Samples per pixel")
-        ->check(CLI::Range(1u, 4096u))
+        ->check(CLI::Range(1u, kMaxSamplesPerPixel))
         ->default_val(1);
     app.add_option("--depth", settings.maxDepth, "Maximum ray depth")
         ->check(CLI::Range(1u, 16u))

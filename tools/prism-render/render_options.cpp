@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "frame_range.h"
 #include "render/image_region.h"
+#include "render/ray_tracer.h"
 #include "shared/gpu_types.h"
 #include "size_option.h"
 #include "tool_environment.h"
@@ -133,7 +134,7 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
                    "together); {tile} in the output name is replaced by I");
     app.add_option("--spp", options.samplesPerPixel,
                    "Samples per pixel (stratified anti-aliasing, soft shadows)")
-        ->check(CLI::Range(1u, 65536u))
+        ->check(CLI::Range(1u, kMaxSamplesPerPixel))
         ->default_val(1);
     app.add_option("--seed", options.seed,
                    "Sampling seed: another seed draws another independent set of pixel and "

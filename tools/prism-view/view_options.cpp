@@ -7,6 +7,7 @@
 
 #include "command_line.h"
 #include "core/error.h"
+#include "render/ray_tracer.h"
 #include "size_option.h"
 #include "tool_environment.h"
 #include "view_script.h"
@@ -25,7 +26,7 @@ bool parseViewOptions(int argc, char **argv, ViewOptions &options, ViewScript &s
     app.add_option("--spp", options.samplesPerPixel,
                    "Samples per pixel to converge to while the camera is still (one per frame; "
                    "the same strata as prism-render --spp N)")
-        ->check(CLI::Range(1u, 65536u))
+        ->check(CLI::Range(1u, kMaxSamplesPerPixel))
         ->default_val(options.samplesPerPixel);
     app.add_option("--depth", options.maxDepth,
                    "Maximum ray depth: 1 = primary and shadow rays only")
