@@ -72,3 +72,15 @@ def test_depth_dataset_files_hold_the_views_of_its_index(tmp_path):
     rgb = prism.Renderer().render(scene, 64, 48, depth=2)["rgb"]
     stored = oiio.ImageBuf(str(out / first["file"])).get_pixels(oiio.FLOAT)[:, :, :3]
     assert np.array_equal(rgb, stored)
+
+
+def test_the_readmes_python_runs_as_written():
+    """The README's three lines, from the repository's root, as a newcomer pastes them."""
+    root = EXAMPLES.parents[1]
+    readme = (root / "README.md").read_text()
+    start = readme.index("```python\n") + len("```python\n")
+    code = readme[start:readme.index("```", start)]
+    done = subprocess.run([sys.executable, "-c", code + "\nprint(rgb.shape, rgb.dtype)\n"],
+                          cwd=root, capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "(480, 640, 3) float32" in done.stdout, done.stdout
