@@ -140,11 +140,15 @@ def charts_of(kit, rows, c, folder):
                         marker="o" if centred else "x", lw=1.6 if v == "auto" else 1.1,
                         label=f"{label}, " + ("centred (as Prism renders)" if centred
                                               else "file's origin (--keep-origin)"))
-        ax.set_xscale("log")
+        # Scales are powers of two (their ticks say so); distances, powers of ten.
+        ax.set_xscale("log", base=2 if axis == "scale" else 10)
         ax.set_yscale("log")
         ax.axhline(floor, color="grey", ls=":", lw=0.8)
         ax.grid(True, which="major", alpha=0.25)
     axes[0].set_xlabel("scene scale (powers of two, at the origin)")
+    exponents = sorted(c["scale_exponents"])
+    axes[0].set_xticks([2.0 ** e for e in exponents])
+    axes[0].set_xticklabels([f"$2^{{{e}}}$" for e in exponents])
     axes[1].set_xlabel("distance moved from the origin along x, y and z (scale 1)")
     axes[0].set_ylabel(f"fraction of wrong pixels (any channel off by > {TOLERANCE})")
     axes[1].set_xticks([c["shift_floor"]] + [d for d in c["shifts"] if d > 0])
