@@ -755,8 +755,11 @@ def _accel_charts(rows, c, modes, folder):
                 continue
             kw = dict(style[v])
             kw.setdefault("lw", 1.3)
+            label = _variant_label(v)
+            if v == "off":
+                label += f" (up to {c['off_max_primitives']:,})"
             axes[0][col].plot([r["count"] for r in rs], [r["trace_ms"] for r in rs],
-                              label=_variant_label(v), ms=5, **kw)
+                              label=label, ms=5, **kw)
             rt = [r for r in rs if r["tests_per_ray"] is not None]
             if rt:
                 axes[1][col].plot([r["count"] for r in rt], [r["tests_per_ray"] for r in rt],
@@ -778,6 +781,16 @@ def _accel_charts(rows, c, modes, folder):
             ax.set_xlabel(f"{unit} in the scene")
             ax.grid(True, which="both", alpha=0.25)
         axes[0][col].legend(fontsize=7)
+        # No grid is measured only up to off_max_primitives: a lone point needs saying so.
+        off = [r for r in fam if r["variant"] == "off"]
+        if off and len(off) < len({r["count"] for r in fam}):
+            last = max(off, key=lambda r: r["count"])
+            for row, key in ((1, "tests_per_ray"),):  # the top row's legend says it
+                axes[row][col].annotate(
+                    f"no grid: measured up to {c['off_max_primitives']:,} {unit}\n"
+                    "(beyond, a frame takes minutes)", (last["count"], last[key]),
+                    xytext=(8, -4), textcoords="offset points", fontsize=7, va="top",
+                    color=style["off"]["color"])
     fig.tight_layout()
     save_figure(fig, folder / "scaling.png")
     charts["scaling"] = "scaling.png"
