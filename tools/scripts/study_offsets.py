@@ -182,12 +182,18 @@ def _failure_images(kit, images, reference, c, folder):
             panels.append((title, images[key]))
     if len(panels) < 2:
         return None
-    fig, axes = plt.subplots(1, len(panels), figsize=(2.6 * len(panels), 2.4))
+    # Three to a row, each large enough to see its failure and read its title.
+    cols = min(3, len(panels))
+    rows = (len(panels) + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(4.2 * cols, 3.6 * rows), squeeze=False)
+    axes = axes.ravel()
+    for ax in axes[len(panels):]:
+        ax.axis("off")
     for ax, (title, img) in zip(axes, panels):
         srgb = np.where(img <= 0.0031308, 12.92 * img, 1.055 * np.power(np.clip(img, 0, None),
                                                                         1 / 2.4) - 0.055)
         ax.imshow(np.clip(srgb, 0, 1), interpolation="nearest")
-        ax.set_title(title, fontsize=7.5)
+        ax.set_title(title, fontsize=11)
         ax.axis("off")
     kit.save_figure(fig, folder / "failures.png")
     return "failures.png"
