@@ -85,6 +85,11 @@ public:
                             const std::function<void(double)> &progress = {},
                             bool copyOut = false);
 
+    // Every ray the frame in progress has counted so far (primary, shadow, secondary): read by
+    // renderFrame's progress callback, which runs after each submission's fence, so that a
+    // long render can show its rays per second before the frame is done.
+    uint64_t raysCounted() const { return decodeCounters(stats_.mapped()).rays.total(); }
+
     // Copies the accumulation (and AOVs) of the region (TracerOptions::region; else the whole
     // image) to the host and divides by the sample count.
     TracedImage readback(uint32_t samplesPerPixel);

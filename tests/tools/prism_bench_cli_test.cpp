@@ -151,6 +151,11 @@ TEST_F(PrismBenchCli, InterleavedScenesGiveEachScenesCostAgainstTheFirst) {
     ASSERT_EQ(plain.exitCode, 0) << plain.out;
     EXPECT_LT(plain.out.find("tiny off: frame 3/3"), plain.out.find("more auto: frame 1/3"));
     EXPECT_EQ(plain.stdoutOnly.find("Per-ray cost against"), std::string::npos);
+    // Not a terminal here: a line a step, without the carriage returns of a terminal's line.
+    EXPECT_EQ(plain.out.find('\r'), std::string::npos) << plain.out;
+    CliResult quiet = bench(scenes + "--variants auto --quiet");
+    ASSERT_EQ(quiet.exitCode, 0) << quiet.out;
+    EXPECT_EQ(quiet.out.find("prism-bench: "), std::string::npos) << quiet.out;
     CliResult r = bench(scenes + "--variants auto,off --interleave-scenes --json " + json.string());
     ASSERT_EQ(r.exitCode, 0) << r.out;
     size_t secondScene = r.out.find("more auto: frame 1/3"),

@@ -3,6 +3,8 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <string>
 
@@ -338,9 +340,23 @@ TEST_F(PrismRenderCli, ProgressInALogIsOneFinalLine) {
     ASSERT_NE(first, std::string::npos) << r.out;
     EXPECT_EQ(r.out.find("prism-render: frame", first + 1), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("elapsed", first), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(" Mrays/s, ", first), std::string::npos) << r.out;
     CliResult quiet = run(scene + out + " --quiet");
     ASSERT_EQ(quiet.exitCode, 0) << quiet.out;
     EXPECT_EQ(quiet.out.find("prism-render:"), std::string::npos) << quiet.out;
+}
+
+// On the GPU the rate is read from the shader's own counters while the frame is traced; a
+// render of over a second (the line's threshold) ends with it in the log's one line.
+TEST_F(PrismRenderCli, ProgressOnTheGpuGivesRaysPerSecond) {
+    std::string scene = std::string(PRISM_SCENES_DIR) + "/showcase.scene";
+    CliResult r = run(scene + " -o " + (dir() / "g.png").string() + " --size 128x96 --spp 96");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    size_t line = r.out.find("prism-render: frame 1/1 100%, ");
+    ASSERT_NE(line, std::string::npos) << r.out;
+    double rate = std::atof(r.out.c_str() + line + std::strlen("prism-render: frame 1/1 100%, "));
+    EXPECT_GT(rate, 0.0) << r.out;
+    EXPECT_NE(r.out.find(" Mrays/s, ", line), std::string::npos) << r.out;
 }
 
 } // namespace

@@ -7,6 +7,8 @@
 #include <iostream>
 #include <sstream>
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -222,6 +224,8 @@ int main(int argc, char **argv) {
     app.add_option("--json", jsonPath, "Also write every result (all frame times) as JSON");
     app.add_option("--device", deviceFilter, "First Vulkan device whose name contains this");
     bool validation = false;
+    bool quiet = false;
+    app.add_flag("--quiet", quiet, "No progress on stderr (it is shown only on a terminal)");
     app.add_flag("--validation", validation,
                  "Enable Vulkan validation layers (also PRISM_VALIDATION=1); any message fails "
                  "the run. Timings under validation are not comparable with others");
@@ -250,12 +254,19 @@ int main(int argc, char **argv) {
         contextOptions.shaderClock = settings.profile;
         contextOptions.validation = validationWanted(validation);
         vk::Context context(contextOptions);
+        // Progress rewrites one line of a terminal; a log or a pipe gets a line a step instead
+        // of carriage returns (which step ran when is what a log of a benchmark is read for).
+        bool terminal = ::isatty(2) == 1;
         std::vector<BenchResult> results =
-            runStudy(context, scenes, variants, settings, [](const std::string &what) {
-                std::fprintf(stderr, "\rprism-bench: %-60s", what.c_str());
+            runStudy(context, scenes, variants, settings, [&](const std::string &what) {
+                if (quiet)
+                    return;
+                std::fprintf(stderr, terminal ? "\rprism-bench: %-60s" : "prism-bench: %s\n",
+                             what.c_str());
                 std::fflush(stderr);
             });
-        std::fprintf(stderr, "\n");
+        if (terminal && !quiet)
+            std::fprintf(stderr, "\n");
         // Every variant, the profiling shader included, ran under the layers when asked: a
         // message fails the run rather than printing timings of a frame the device misread.
         if (context.validationMessageCount() > 0)

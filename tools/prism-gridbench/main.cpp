@@ -178,6 +178,8 @@ int main(int argc, char **argv) {
                    "Threads for the grid builds (default: one per core; Embree keeps its own)")
         ->check(CLI::Range(1u, 1024u));
     app.add_flag("--no-embree", noEmbree, "Leave Embree's build out");
+    bool quiet = false;
+    app.add_flag("--quiet", quiet, "No progress (each scene's name as it starts) on stderr");
     app.add_option("--json", jsonPath, "Also write every result (all build times) as JSON");
     if (auto status = parseCommandLine("prism-gridbench", app, argc, argv, [&] {
             std::stringstream list(gridList);
@@ -196,7 +198,8 @@ int main(int argc, char **argv) {
         std::vector<Row> rows;
         for (const std::string &path : scenes) {
             std::string name = std::filesystem::path(path).stem().string();
-            std::fprintf(stderr, "prism-gridbench: %s\n", name.c_str());
+            if (!quiet)
+                std::fprintf(stderr, "prism-gridbench: %s\n", name.c_str());
             Scene scene = loadScene(path);
             centerOnCamera(scene);
             if (!noEmbree && embreeAvailable())

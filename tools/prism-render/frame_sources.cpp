@@ -93,10 +93,14 @@ FrameOutcome VulkanFrameSource::render(const Camera &camera, const std::string &
                                ? label + " timing " + std::to_string(frame) + "/" +
                                      std::to_string(o_.repeat)
                                : label;
-        FrameResult result =
-            tracer_->renderFrame(camera, frame == 0 ? 1u : o_.samplesPerPixel,
-                                 [&](double f) { progress.update(text, f, after); },
-                                 frame == o_.repeat); // the image read back below
+        Timer frameTimer;
+        auto report = [&](double f) {
+            double ms = frameTimer.elapsedMs();
+            progress.update(text, f, after, ms > 0.0 ? double(tracer_->raysCounted()) / (ms * 1e3) : 0.0);
+        };
+        FrameResult result = tracer_->renderFrame(camera, frame == 0 ? 1u : o_.samplesPerPixel,
+                                                  report,
+                                                  frame == o_.repeat); // the image read back below
         // renderFrame traces a frame that overran lavapipe's loop limit again, resumably.
         out.resumeDispatches = result.resumeDispatches;
         out.tiles = result.tiles;

@@ -1,5 +1,5 @@
 #pragma once
-// "prism-render: frame 1/3 42%, 12s left, 9.1s elapsed" on stderr, shown only once work has
+// "prism-render: frame 1/3 42%, 3.9 Mrays/s, 12s left, 9.1s elapsed" on stderr, shown only once work has
 // taken over a second so that short renders stay silent. On a terminal the line is rewritten in
 // place; where stderr is a file or a pipe (a farm's log) only the last state is written, once,
 // at the end, so that logs do not fill with carriage returns.
@@ -19,9 +19,11 @@ public:
     explicit ProgressLine(bool enabled) : enabled_(enabled), terminal_(::isatty(2) == 1) {}
     ~ProgressLine() { finish(); }
 
-    // "LABEL NN%AFTER, T elapsed": `after` says more of the whole (", 1m20s left"); without
-    // it, the time left of this label's work is estimated from its fraction so far.
-    void update(const std::string &label, double fraction, const std::string &after = {}) {
+    // "LABEL NN%, R Mrays/sAFTER, T elapsed": `after` says more of the whole (", 1m20s left");
+    // without it, the time left of this label's work is estimated from its fraction so far.
+    // The rate is left out where the caller does not know it yet (0).
+    void update(const std::string &label, double fraction, const std::string &after = {},
+                double mraysPerSecond = 0.0) {
         if (!enabled_)
             return;
         if (label != label_) {
@@ -32,6 +34,11 @@ public:
         if (elapsed < 1.0)
             return;
         std::string text = label + " " + std::to_string(int(fraction * 100.0)) + "%";
+        if (mraysPerSecond > 0.0) {
+            char rate[32];
+            std::snprintf(rate, sizeof rate, ", %.3g Mrays/s", mraysPerSecond);
+            text += rate;
+        }
         double labelSeconds = labelTimer_.elapsedMs() / 1e3;
         if (!after.empty())
             text += after;

@@ -147,7 +147,10 @@ void runRender(const RenderOptions &o) {
                     " left";
         Camera camera = cameraAt(scene, job.frame);
         FrameOutcome out = source->render(camera, label, after, progress);
-        progress.update(label, 1.0, after);
+        // The frame's rate by the host's clock: what the user waits, on either backend.
+        double frameWallMs = *std::min_element(out.wallMs.begin(), out.wallMs.end());
+        progress.update(label, 1.0, after,
+                        frameWallMs > 0.0 ? double(out.rays.total()) / (frameWallMs * 1e3) : 0.0);
         // The grid's work per primary ray, counted on the CPU for every image; counting stops
         // at 1,000 tests a ray (under 2M tests, tens of ms, at worst), giving lower bounds.
         Timer countTimer;
