@@ -220,6 +220,12 @@ def main():
         if not (args.bin / tool).exists():
             sys.exit(f"headline: {args.bin / tool} not found; build first "
                      "(cmake --preset release && cmake --build --preset release) or give --bin")
+    if not args.print:
+        try:
+            import matplotlib  # noqa: F401  (the chart; checked before minutes of measuring)
+        except ImportError:
+            sys.exit("headline: matplotlib is missing for the chart: install python3-matplotlib "
+                     "(tools/scripts/install-deps.sh) and run it with Debian's /usr/bin/python3")
     if not args.print and not wait_until_idle(args.max_load, args.wait):
         sys.exit(f"headline: the machine stayed busy (load {load_average():.2f} > "
                  f"{args.max_load}) for {args.wait:.0f} s; the headline must come from an idle "
