@@ -170,10 +170,26 @@ def write_csv(path, rows):
 WRITE_SVG = True  # --quick writes PNG only: the test checks the charts, not their vector copies
 
 
+# "run 2026-12-05, commit 1a2b3c, load 0.12 before": set for each study's run (and from its
+# section.json when replotting) and written in a corner of every chart, because absolute times
+# on a shared 2-core machine are only as good as the load they were measured under.
+FIGURE_STAMP = None
+
+
+def stamp_text(section):
+    load = section.get("load_before")
+    return (f"run {section['date']}, commit {section.get('commit', 'not recorded')}, "
+            + (f"load {load:.2f} before it (1-min average, {section.get('cpus', '?')} CPUs)"
+               if load is not None else "machine load not recorded"))
+
+
 def save_figure(fig, path_png):
     """Saves a matplotlib figure as PNG (and SVG unless --quick) atomically and closes it. SVG
     metadata dates are dropped so that regenerated charts differ only where the data do."""
     import matplotlib.pyplot as plt
+    if FIGURE_STAMP:
+        # Under the figure (bbox_inches="tight" takes it in), clear of the axis labels.
+        fig.text(0.995, -0.01, FIGURE_STAMP, ha="right", va="top", fontsize=7, color="0.45")
     svg = WRITE_SVG
     path_png.parent.mkdir(parents=True, exist_ok=True)
     targets = [(path_png, "png", {"dpi": 110})]
@@ -1185,8 +1201,10 @@ def write_readme(out, status, review):
         if not m:
             parts.append("Not run yet: `tools/scripts/studies.py " + name + "`.\n")
             continue
+        load = (f", load {m['load_before']:.2f} before it" if "load_before" in m
+                else ", machine load not recorded")
         parts.append(f"*Run {m['date']} on {m['device']} ({m['host']}), "
-                     f"{m['seconds']:.0f} s: `{m['command']}`*\n")
+                     f"{m['seconds']:.0f} s{load}: `{m['command']}`*\n")
         parts.append(m["markdown"] + "\n")
     write_text(out / "README.md", "\n".join(parts))
 
@@ -1194,13 +1212,14 @@ def write_readme(out, status, review):
 def replot(out, chosen, args):
     """Remakes charts, Markdown and README from the data of an earlier run, keeping that run's
     date, device, command line and time: a chart can be fixed without re-measuring."""
-    global WRITE_SVG
+    global WRITE_SVG, FIGURE_STAMP
     for name in chosen:
         data_path, sec_path = out / name / "data.json", out / name / "section.json"
         if not (data_path.is_file() and sec_path.is_file()):
             continue
         d, sec = json.loads(data_path.read_text()), json.loads(sec_path.read_text())
         WRITE_SVG = "quick" not in sec["status"]
+        FIGURE_STAMP = stamp_text(sec)
         folder = out / name
         if name == "accuracy":
             charts = _accuracy_charts(d["rows"], d["references"], d["config"], folder)
@@ -1276,7 +1295,7 @@ def main():
     out = Path(args.out).resolve()
     if args.replot:
         return replot(out, chosen, args)
-    global WRITE_SVG
+    global WRITE_SVG, FIGURE_STAMP
     WRITE_SVG = not args.quick
     progress = Progress()
     failed = []
@@ -1285,8 +1304,13 @@ def main():
         apply_overrides(config, args.set)
         tools = Tools(args.bin, progress)
         command = " ".join(["tools/scripts/studies.py"] + [shlex.quote(a) for a in sys.argv[1:]])
+        head = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "--short=10", "HEAD"],
+                              capture_output=True, text=True).stdout.strip() or "unknown"
         for name in chosen:
             started = time.monotonic()
+            stamp = {"date": datetime.date.today().isoformat(), "commit": head,
+                     "load_before": os.getloadavg()[0], "cpus": os.cpu_count()}
+            FIGURE_STAMP = stamp_text(stamp)
             with tempfile.TemporaryDirectory(prefix=f"studies-{name}-") as tmp:
                 try:
                     fn = {"accuracy": study_accuracy, "offsets": study_offsets_run,
@@ -1301,7 +1325,7 @@ def main():
                     continue
             seconds = time.monotonic() - started
             write_json(out / name / "section.json", {
-                "status": status, "date": datetime.date.today().isoformat(),
+                **stamp, "load_after": os.getloadavg()[0], "status": status,
                 "device": tools.device or "no device used", "host": f"{platform.node()}, "
                 f"{os.cpu_count()} CPUs", "seconds": seconds, "command": command,
                 "config": config.get(name, {}), "summary": summary,
