@@ -178,8 +178,12 @@ FIGURE_STAMP = None
 
 def stamp_text(section):
     load = section.get("load_before")
+    if section.get("load_note"):  # a run from before the load was recorded, noted by hand
+        return (f"run {section['date']}, commit {section.get('commit', 'not recorded')}, "
+                f"load {section['load_note']}")
     return (f"run {section['date']}, commit {section.get('commit', 'not recorded')}, "
-            + (f"load {load:.2f} before it (1-min average, {section.get('cpus', '?')} CPUs)"
+            + (f"load {load:.2f} when the run began (1-min average, "
+               f"{section.get('cpus', '?')} CPUs)"
                if load is not None else "machine load not recorded"))
 
 
@@ -1201,7 +1205,8 @@ def write_readme(out, status, review):
         if not m:
             parts.append("Not run yet: `tools/scripts/studies.py " + name + "`.\n")
             continue
-        load = (f", load {m['load_before']:.2f} before it" if "load_before" in m
+        load = (f", load {m['load_note']}" if m.get("load_note")
+                else f", load {m['load_before']:.2f} when the run began" if "load_before" in m
                 else ", machine load not recorded")
         parts.append(f"*Run {m['date']} on {m['device']} ({m['host']}), "
                      f"{m['seconds']:.0f} s{load}: `{m['command']}`*\n")
@@ -1306,11 +1311,13 @@ def main():
         command = " ".join(["tools/scripts/studies.py"] + [shlex.quote(a) for a in sys.argv[1:]])
         head = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "--short=10", "HEAD"],
                               capture_output=True, text=True).stdout.strip() or "unknown"
+        # The load as the command began, before its own work raised it: a study that follows
+        # another would otherwise read the first one's load as if it were someone else's.
+        stamp = {"date": datetime.date.today().isoformat(), "commit": head,
+                 "load_before": os.getloadavg()[0], "cpus": os.cpu_count()}
+        FIGURE_STAMP = stamp_text(stamp)
         for name in chosen:
             started = time.monotonic()
-            stamp = {"date": datetime.date.today().isoformat(), "commit": head,
-                     "load_before": os.getloadavg()[0], "cpus": os.cpu_count()}
-            FIGURE_STAMP = stamp_text(stamp)
             with tempfile.TemporaryDirectory(prefix=f"studies-{name}-") as tmp:
                 try:
                     fn = {"accuracy": study_accuracy, "offsets": study_offsets_run,
