@@ -22,6 +22,8 @@ ROOT = Path(__file__).resolve().parents[2]
 ORDER = ["scene", "grid", "rand50", "rand500", "rand5000", "teapot", "bunny", "objects",
          "showcase", "cornell", "environment", "bump-maps", "instances"]
 PER_ROW = 5
+# Scenes that would show another scene again: the turntable is the showcase, animated.
+SAME_PICTURE = {"showcase-turntable"}
 
 
 def render(binary: Path, scene: Path, out: Path, size: str, spp: int) -> np.ndarray:
@@ -41,7 +43,8 @@ def main() -> int:
     args = parser.parse_args()
     binary = Path(args.bin) / "prism-render"
     scenes = ROOT / "assets" / "scenes"
-    names = ORDER + sorted(p.stem for p in scenes.glob("*.scene") if p.stem not in ORDER)
+    names = ORDER + sorted(p.stem for p in scenes.glob("*.scene")
+                           if p.stem not in ORDER and p.stem not in SAME_PICTURE)
     width, height = (int(v) for v in args.size.split("x"))
     rows = (len(names) + PER_ROW - 1) // PER_ROW
     montage = np.full((rows * height, PER_ROW * width, 3), 255, dtype=np.uint8)
