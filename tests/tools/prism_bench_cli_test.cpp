@@ -93,6 +93,33 @@ TEST_F(PrismBenchCli, SavedImagesOfTheStudiesVariants) {
     }
 }
 
+// --seed draws the samples prism-render draws under the same seed (a benchmark of another set
+// of samples is a benchmark of the images a user gets with it), and another set than seed 0's.
+TEST_F(PrismBenchCli, SeedDrawsPrismRendersSamples) {
+    fs::path images = dir() / "seeded";
+    fs::create_directory(images);
+    std::string common = scene_.string() + " --size 24x16 --spp 2 ";
+    CliResult r = bench(common + "--runs 1 --seed 7 --save-images " + images.string());
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    for (const char *seed : {"7", "0"}) {
+        fs::path rendered = dir() / ("seed" + std::string(seed) + ".exr");
+        ASSERT_EQ(prism::test::runTool(PRISM_RENDER_EXE, common + "--seed " + seed + " -o " +
+                                                             rendered.string() + " --quiet")
+                      .exitCode,
+                  0);
+        prism::LoadedImage benched = prism::readImage(images / "tiny_auto.exr");
+        prism::LoadedImage plain = prism::readImage(rendered);
+        ASSERT_EQ(benched.pixels.size(), plain.pixels.size());
+        size_t differing = 0;
+        for (size_t i = 0; i < plain.pixels.size(); ++i)
+            differing += benched.pixels[i] != plain.pixels[i];
+        if (std::string(seed) == "7")
+            EXPECT_EQ(differing, 0u) << "prism-bench --seed 7 is not prism-render's seed 7";
+        else
+            EXPECT_GT(differing, 0u) << "seed 7 drew seed 0's samples";
+    }
+}
+
 TEST_F(PrismBenchCli, KeepOriginTracesTheFileCoordinates) {
     // 1e6 from the origin, uncentred floats are 1/16 apart: the picture changes (what the
     // centring protects against), where the centred run gives the picture of the scene.

@@ -29,6 +29,7 @@ PhaseProfile profileLevel(vk::Context &context, const Scene &scene, const Grid &
     options.maxDepth = settings.maxDepth;
     options.profile = level;
     RayTracer tracer(context, scene, grid, settings.width, settings.height, options);
+    tracer.setSeed(settings.seed);
     tracer.renderFrame(scene.camera, settings.samplesPerPixel); // compile, warm caches
     std::array<std::vector<double>, gpu::kProfileSlots> ns;
     std::vector<double> frameMs;

@@ -110,6 +110,7 @@ std::unique_ptr<SceneStudy> setUpScene(vk::Context &context, const std::string &
         options.maxDepth = settings.maxDepth;
         auto tracer = std::make_unique<RayTracer>(context, scene, grid, settings.width,
                                                   settings.height, options);
+        tracer->setSeed(settings.seed);
         for (const ArrayBytes &a : tracer->sceneArrayBytes())
             r.sceneBytes += a.bytes;
         FrameResult warm = tracer->renderFrame(scene.camera, settings.samplesPerPixel);

@@ -18,6 +18,7 @@ namespace prism {
 struct BenchSettings {
     uint32_t width = 1024, height = 768;
     uint32_t samplesPerPixel = 1;
+    uint32_t seed = 0; // the sampling seed (RayTracer::setSeed): another set of samples
     uint32_t maxDepth = 5;
     uint32_t runs = 5; // timed frames per variant, after one warm-up frame
     // Also trace each scene's camera and shadow rays with Intel Embree on all cores (the

@@ -174,6 +174,11 @@ int main(int argc, char **argv) {
     app.add_option("--spp", settings.samplesPerPixel, "Samples per pixel")
         ->check(CLI::Range(1u, kMaxSamplesPerPixel))
         ->default_val(1);
+    app.add_option("--seed", settings.seed,
+                   "Sampling seed (as prism-render's): another independent set of pixel and "
+                   "area-light samples; 0, the default, the usual one")
+        ->check(CLI::Range(0u, gpu::kMaxSeed))
+        ->default_val(0u);
     app.add_option("--depth", settings.maxDepth, "Maximum ray depth")
         ->check(CLI::Range(1u, 16u))
         ->default_val(5);
@@ -295,6 +300,7 @@ int main(int argc, char **argv) {
                                                  {"width", settings.width},
                                                  {"height", settings.height},
                                                  {"spp", settings.samplesPerPixel},
+                                                 {"seed", settings.seed},
                                                  {"depth", settings.maxDepth},
                                                  {"runs", settings.runs},
                                                  {"interleave_scenes", settings.interleaveScenes},
