@@ -74,4 +74,6 @@ void writeImage(const std::filesystem::path &path, const OutputImage &image,
     staged.commit();
 }
 
+void preloadImageFiles() {} // OpenImageIO was loaded with the program
+
 } // namespace prism

@@ -28,4 +28,9 @@ struct OutputImage {
 void writeImage(const std::filesystem::path &path, const OutputImage &image,
                 const ImageMetadata &meta);
 
+// Where image files go through OpenImageIO loaded at the first call (io/oiio_plugin.h), loads
+// it now, so that a caller can have that done on a thread of its own while other work goes on;
+// failures are left for the first real call to report. Linked directly, it does nothing.
+void preloadImageFiles();
+
 } // namespace prism

@@ -17,9 +17,22 @@ std::filesystem::path ownDirectory() {
     return std::filesystem::path(info.dli_fname).parent_path();
 }
 
+// Beside the binary (the build's bin/ and python/, and an installed Python module), else, for
+// installed tools, where `cmake --install` puts it relative to them (tools/CMakeLists.txt).
+std::filesystem::path pluginPath() {
+    std::filesystem::path beside = ownDirectory() / kOiioPluginFile;
+#ifdef PRISM_INSTALLED_PLUGIN_DIR
+    std::filesystem::path installed =
+        ownDirectory() / PRISM_INSTALLED_PLUGIN_DIR / kOiioPluginFile;
+    if (!std::filesystem::exists(beside) && std::filesystem::exists(installed))
+        return installed;
+#endif
+    return beside;
+}
+
 const OiioPluginTable &plugin() {
     static const OiioPluginTable *table = [] {
-        std::filesystem::path path = ownDirectory() / kOiioPluginFile;
+        std::filesystem::path path = pluginPath();
         void *library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (!library)
             throw Error(std::string("cannot load Prism's image-file library (OpenImageIO): ") +
@@ -52,6 +65,14 @@ Texture readTexture(const std::filesystem::path &path, TexelMeaning meaning) {
 void writeImage(const std::filesystem::path &path, const OutputImage &image,
                 const ImageMetadata &meta) {
     check(plugin().writeImage(path, image, meta));
+}
+
+void preloadImageFiles() {
+    try {
+        plugin();
+    } catch (const Error &) {
+        // The first real call tries again and reports it, where it has a file to name.
+    }
 }
 
 LoadedImage readImage(const std::filesystem::path &path) {

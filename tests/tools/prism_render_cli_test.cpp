@@ -48,6 +48,27 @@ TEST_F(PrismRenderCli, SceneErrorNamesFileAndLineAndWritesNothing) {
     EXPECT_EQ(filesInDir(), 1u) << "only the scene itself: no image, no temporary file";
 }
 
+// OpenImageIO's ~260 libraries are not mapped before prism-render needs them (0.3-0.5 s before
+// main, when it linked them): a refused output path never loads them; a render does, from
+// build/bin/libprism_oiio.so. The dynamic loader's own log (LD_DEBUG=files) says which it maps.
+TEST_F(PrismRenderCli, OpenImageIOIsLoadedOnlyForARender) {
+    std::string scene = std::string(PRISM_SCENES_DIR) + "/rand50.scene";
+    auto mapped = [&](const std::string &out) {
+        return prism::test::runTool("LD_DEBUG=files " + std::string(PRISM_RENDER_EXE),
+                                    scene + " --size 16x12 --quiet -o " + out);
+    };
+    CliResult refused = mapped((dir() / "no/such/dir/x.png").string());
+    EXPECT_NE(refused.exitCode, 0);
+    EXPECT_NE(refused.out.find("does not exist"), std::string::npos) << refused.out;
+    EXPECT_EQ(refused.out.find("libOpenImageIO"), std::string::npos)
+        << "OpenImageIO was loaded for a command that writes nothing";
+    CliResult rendered = mapped((dir() / "x.png").string());
+    ASSERT_EQ(rendered.exitCode, 0) << rendered.out;
+    EXPECT_TRUE(fs::is_regular_file(dir() / "x.png"));
+    EXPECT_NE(rendered.out.find("libprism_oiio.so"), std::string::npos) << "not loaded late";
+    EXPECT_NE(rendered.out.find("libOpenImageIO"), std::string::npos);
+}
+
 // A bad output path fails before the scene is even read (issue 35: it used to be found after
 // the whole render): the scene here is broken too, and the message is the output's.
 TEST_F(PrismRenderCli, BadOutputPathFailsBeforeAnyWork) {

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "frame_range.h"
 #include "frame_sources.h"
 #include "io/image_write_queue.h"
+#include "io/image_writer.h"
 #include "io/staged_file.h"
 #include "progress_line.h"
 #include "render_metadata.h"
@@ -94,6 +96,8 @@ void runRender(const RenderOptions &o) {
     }
     for (const FrameJob &job : jobs) // a bad -o fails now, not after the render
         checkCanStage(job.output);
+    // OpenImageIO loads while the scene loads and the device starts (joined on return).
+    std::jthread imageFiles([] { preloadImageFiles(); });
     // Built grids and the device's pipeline cache are kept here between runs.
     std::optional<DiskCache> cache;
     if (!o.noCache && !o.cacheDir.empty())
