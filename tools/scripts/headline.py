@@ -114,8 +114,8 @@ def table(data):
         "**Against Embree**: depth 1 (camera rays and one shadow ray per light, the rays both "
         "trace alike), Mrays/s of each, interleaved in one `prism-bench --baseline embree` run; "
         "Embree 8-wide packets on all cores, by wall time; Embree only traces, while Prism's "
-        "rate includes its shading (textures, bump maps, the sky, instances: most of the "
-        "showcase's cost). **Original**: the dissertation's "
+        "rate includes its shading (and the showcase's textures, bump map, sky and instances, "
+        "which the seed scenes do not have). **Original**: the dissertation's "
         "OpenCL renderer on an 8-core FX 8350 CPU and an HD 7870 GPU (its tables; our scenes are "
         "recreations of its descriptions, so a row compares the same kind of work, not the same "
         "image).",
