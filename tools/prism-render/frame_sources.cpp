@@ -93,10 +93,11 @@ FrameOutcome VulkanFrameSource::render(const Camera &camera, const std::string &
                                ? label + " timing " + std::to_string(frame) + "/" +
                                      std::to_string(o_.repeat)
                                : label;
-        Timer frameTimer;
+        Timer frameTimer; // the rate so far: the shader's ray counts over the frame's time
         auto report = [&](double f) {
             double ms = frameTimer.elapsedMs();
-            progress.update(text, f, after, ms > 0.0 ? double(tracer_->raysCounted()) / (ms * 1e3) : 0.0);
+            double rate = ms > 0.0 ? double(tracer_->raysCounted()) / (ms * 1e3) : 0.0;
+            progress.update(text, f, after, rate);
         };
         FrameResult result = tracer_->renderFrame(camera, frame == 0 ? 1u : o_.samplesPerPixel,
                                                   report,
