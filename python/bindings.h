@@ -15,7 +15,12 @@ namespace prism::python {
 // render uses, kept in the prepared scene's coordinates so that a frame set from Python is the
 // camera prism-render --frames uses, to the bit.
 struct PyScene {
+    // Replaced, never changed, when a frame moves keyed instances: a renderer may be tracing
+    // the scene as it was.
     std::shared_ptr<const PreparedScene> prepared;
+    // One per load, kept by the moved copies: a renderer that traced this scene at another
+    // frame uploads the moved arrays to the tracer it has (RayTracer::setScene), no new compile.
+    uint64_t lineage = 0;
     Camera camera; // in prepared->scene's (centred) coordinates
     double frame = 1.0;
     std::string path; // the .scene file, or "<string>" (last_stats' "scene")

@@ -23,9 +23,10 @@ namespace py = pybind11;
 namespace prism::python {
 namespace {
 
-// What a tracer is made for: the scene and everything fixed at its creation.
+// What a tracer is made for: the scene (its every frame: PyScene::lineage) and everything fixed
+// at its creation.
 struct TracerKey {
-    const PreparedScene *scene = nullptr;
+    uint64_t scene = 0;
     uint32_t width = 0, height = 0, depth = 0;
     bool aov = false;
     bool operator==(const TracerKey &) const = default;
@@ -71,7 +72,7 @@ public:
         {
             py::gil_scoped_release released; // Python threads run while this one renders
             std::lock_guard lock(mutex_);    // one render at a time on this renderer
-            TracerKey key{scene->prepared.get(), width, height, depth, z || n};
+            TracerKey key{scene->lineage, width, height, depth, z || n};
             if (!tracer_ || !(key == key_)) {
                 tracer_.reset(); // the old scene's arrays go before the new ones come
                 Timer made;
@@ -84,6 +85,12 @@ public:
                 tracerMs = made.elapsedMs();
                 key_ = key;
                 keptScene_ = scene->prepared; // the tracer's scene stays alive with it
+            } else if (keptScene_ != scene->prepared) {
+                // The same scene at another frame: its instances moved (scene.frame).
+                Timer moved;
+                tracer_->setScene(scene->prepared->scene, scene->prepared->grid);
+                tracerMs = moved.elapsedMs();
+                keptScene_ = scene->prepared;
             }
             tracer_->setSeed(seed);
             frame = tracer_->renderFrame(camera, spp, {}, true); // copied out in its submission

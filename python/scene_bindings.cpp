@@ -1,5 +1,7 @@
 // prism.Scene, prism.Camera and prism.load.
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -41,6 +43,8 @@ std::shared_ptr<PyScene> prepare(Scene loaded, const std::string &grid, bool cac
             prepareScene(std::move(loaded), options, store ? &*store : nullptr));
     }
     scene->camera = scene->prepared->scene.camera;
+    static std::atomic<uint64_t> loads{0};
+    scene->lineage = ++loads;
     scene->path = path;
     scene->loadMs = loadMs;
     return scene;
@@ -131,26 +135,42 @@ void bindScene(py::module_ &m) {
         .def_property(
             "frame", [](const PyScene &s) { return s.frame; },
             [](PyScene &s, double frame) {
-                // The camera prism-render --frames uses for this frame, to the bit.
-                s.camera = cameraAt(s.prepared->scene, frame);
+                // The camera and instances prism-render --frames uses for this frame, to the bit.
+                Camera camera = cameraAt(s.prepared->scene, frame);
+                if (placementsAnimated(s.prepared->scene) && frame != s.prepared->frame) {
+                    py::gil_scoped_release released; // the copy and the build take a while
+                    auto moved = std::make_shared<PreparedScene>(*s.prepared);
+                    moveToFrame(*moved, frame);
+                    s.prepared = std::move(moved);
+                }
+                s.camera = camera;
                 s.frame = frame;
             },
             "The animation frame (1 = the camera line). Setting it sets the camera to that "
-            "frame's (key lines or a turntable, docs/scene-format.md).")
+            "frame's (key lines or a turntable) and moves keyed instances (key lines under "
+            "place lines) there, docs/scene-format.md.")
         .def_property_readonly(
             "animated",
-            [](const PyScene &s) { return s.prepared->scene.cameraAnimation.animated(); },
-            "Whether the scene's camera moves (key lines or a turntable).")
+            [](const PyScene &s) {
+                return s.prepared->scene.cameraAnimation.animated() ||
+                       placementsAnimated(s.prepared->scene);
+            },
+            "Whether the scene's camera or any instance moves (key lines or a turntable).")
         .def_property_readonly(
             "last_frame",
             [](const PyScene &s) {
-                const CameraAnimation &a = s.prepared->scene.cameraAnimation;
+                const Scene &scene = s.prepared->scene;
+                const CameraAnimation &a = scene.cameraAnimation;
+                double last = a.keys.empty() ? 1.0 : a.keys.back().frame;
                 if (a.turntable)
-                    return a.turntable->frames; // frame frames + 1 would be frame 1 again
-                return a.keys.empty() ? 1.0 : a.keys.back().frame;
+                    last = a.turntable->frames; // frame frames + 1 would be frame 1 again
+                for (const PlacementTrack &track : scene.placementTracks)
+                    last = std::max(last, track.keys.back().frame);
+                return last;
             },
-            "The animation's last frame: a turntable's frame count, the last key's frame, or 1 "
-            "for a still scene. Frames run from 1.")
+            "The animation's last frame: the later of a turntable's frame count and the last "
+            "key's frame (the camera's or a placement's), or 1 for a still scene. Frames run "
+            "from 1.")
         .def_property_readonly(
             "primitives",
             [](const PyScene &s) { return s.prepared->scene.finitePrimitiveCount(); },

@@ -100,6 +100,11 @@ struct Grid {
 
 Grid buildGrid(const Scene &scene, const GridOptions &options = {});
 
+// The grid of `scene` whose instances have moved since `previous` was built for it (a keyed
+// placement's next frame): the level the instances are in built again, the prototypes' mesh
+// grids taken over from `previous` untouched. With --grid auto, `previous`'s kind is kept.
+Grid rebuildInstanceLevel(const Scene &scene, Grid previous, const GridOptions &options);
+
 // A cell box in voxels, as the tracer reads it: 16 bits per coordinate.
 glm::uvec4 packCellBox(glm::ivec3 min, glm::ivec3 max);
 void unpackCellBox(const glm::uvec4 &packed, glm::ivec3 &min, glm::ivec3 &max);

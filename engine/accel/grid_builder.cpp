@@ -163,4 +163,16 @@ Grid buildGrid(const Scene &scene, const GridOptions &options) {
     return chooseGrid(scene, build);
 }
 
+Grid rebuildInstanceLevel(const Scene &scene, Grid previous, const GridOptions &options) {
+    // --grid auto keeps the kind it chose at the first frame: the tracer's variant follows the
+    // kind, and a choice made again each frame could switch it (and recompile) mid-range.
+    GridOptions one = options;
+    if (one.mode == GridOptions::Mode::Auto)
+        one.mode = previous.adaptive() ? GridOptions::Mode::Adaptive : GridOptions::Mode::Regular;
+    Grid grid = buildOneGrid(scene, one);
+    grid.meshGrids = std::move(previous.meshGrids);
+    grid.choice = std::move(previous.choice);
+    return grid;
+}
+
 } // namespace prism

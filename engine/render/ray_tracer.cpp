@@ -35,7 +35,7 @@ ArrayLimits arrayLimits(const vk::Context &context, const TracerOptions &options
 
 RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid, uint32_t width,
                      uint32_t height, const TracerOptions &options)
-    : context_(context),
+    : context_(context), options_(options),
       features_(
           chooseFeatures(scene, grid, options, context.properties().limits.maxTexelBufferElements)),
       limits_(arrayLimits(context, options)), runner_(context),
@@ -62,12 +62,43 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     tileStarts_ = options.cullMissTiles && options.tileStarts;
     // A GPU schedules workgroups its own way: there the order of the rows does not matter.
     dispatchShares_ = context.isLavapipe() && options.rowsByThread ? lavapipeDispatchShares() : 0;
+    choosePlaneGuards(scene);
+}
+
+void RayTracer::choosePlaneGuards(const Scene &scene) {
+    planeGuards_.reset();
     size_t mirror = 0;
     PlaneTiles mode = planeTilesMode(scene, mirror);
-    if (options.cullMissTiles && options.cullPlaneTiles && mode != PlaneTiles::Never)
+    if (options_.cullMissTiles && options_.cullPlaneTiles && mode != PlaneTiles::Never)
         planeGuards_ = planeTileGuards(
             extent_.boxes, extent_.planes, scene.lights, features_.shadows,
             mode == PlaneTiles::OneMirror ? std::optional<size_t>(mirror) : std::nullopt);
+}
+
+void RayTracer::setScene(const Scene &scene, const Grid &grid) {
+    vkDeviceWaitIdle(context_.device()); // no submission may still read the old arrays
+    TracerFeatures features = chooseFeatures(scene, grid, options_,
+                                             context_.properties().limits.maxTexelBufferElements);
+    features.resumable = features_.resumable; // once switched, for good
+    scene_ = uploadScene(
+        context_, runner_, packScene(scene, grid, features.cellTriangles, features.cellSpheres),
+        limits_, options_.stagedUpload ? UploadPath::Staged : UploadPath::InPlaceWhereShared);
+    if (features == features_) {
+        // The same variants read the new arrays: no compile.
+        for (vk::ComputePipeline *pipeline :
+             {pipeline_.get(), missPipeline_.get(), planesPipeline_.get()})
+            if (pipeline)
+                bindScene(*pipeline, scene_, limits_);
+    } else {
+        features_ = features;
+        createPipeline();
+        if (missPipeline_)
+            missPipeline_ = createTracerPipeline(features_.backgroundOnly(), Module::BackgroundOnly);
+        planesPipeline_.reset();
+    }
+    extent_ = sceneExtent(scene, grid, options_.maxStartBoxes);
+    choosePlaneGuards(scene);
+    keptTiles_.params.reset(); // the tile lists follow the scene's boxes too
 }
 
 vk::ComputePipeline &RayTracer::planesPipeline() {

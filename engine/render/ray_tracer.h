@@ -129,6 +129,12 @@ public:
     // sample 0 is traced again.
     void resize(uint32_t width, uint32_t height);
 
+    // The same scene with its instances moved (session/prepared_scene.h: moveToFrame) and `grid`
+    // built for it: the arrays uploaded again, the compiled variants kept where the scene's
+    // features are unchanged (recompiled where they are not); waits for the device to be idle.
+    // Frames traced from then on see the new scene; the accumulation is left as it is.
+    void setScene(const Scene &scene, const Grid &grid);
+
     const vk::Image &accumulation() const { return accum_; }
     const TracerFeatures &features() const { return features_; }
     // The scene's arrays on the device, as uploaded (--stats: what instancing saves shows here).
@@ -193,7 +199,11 @@ private:
     void traceSampleResumably(const Camera &camera, uint32_t sample, uint32_t samplesPerPixel,
                               bool resetCounters, FrameResult &result);
 
+    // planeGuards_ for the scene as it is now (planeTilesMode, TracerOptions::cullPlaneTiles).
+    void choosePlaneGuards(const Scene &scene);
+
     vk::Context &context_;
+    TracerOptions options_; // as given: setScene chooses the variants again by them
     uint32_t width_ = 0, height_ = 0; // the whole image's
     PixelRect region_;                // what readback returns: the whole image, or a part
     // The tiles round region_: what the frames trace and the accumulation holds, from the

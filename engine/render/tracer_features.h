@@ -94,6 +94,7 @@ struct TracerFeatures {
     bool cellSpheres = false;      // the cell sphere array is packed and walked
 
     bool has(uint32_t kind) const { return (kinds >> kind) & 1u; }
+    bool operator==(const TracerFeatures &) const = default;
     // The same tracer for rays that hit nothing: no primitive kind and nothing that only a hit
     // uses; misses still see the environment, and AOVs are still written.
     TracerFeatures backgroundOnly() const;

@@ -5,15 +5,21 @@
 #include "scene/diagnostics.h"
 #include "scene/directive_values.h"
 #include "scene/number_parser.h"
+#include "scene/placement.h"
 
 namespace prism {
 
-const DirectiveSpec kKeySpec{
+const DirectiveSpec kCameraKeySpec{
     "key",
     "key FRAME [eye X Y Z] [look X Y Z] [up X Y Z] [fov DEG] [ortho HEIGHT]",
     1,
     1,
     {{"eye", 3}, {"look", 3}, {"up", 3}, {"fov", 1}, {"ortho", 1}}};
+const DirectiveSpec kPlaceKeySpec{"key",
+                                  "key FRAME [scale S] [rotate AXIS DEG]... [translate X Y Z]",
+                                  1,
+                                  1,
+                                  {{"scale", 1}, {"rotate", 2, true}, {"translate", 3}}};
 const DirectiveSpec kTurntableSpec{"turntable",
                                    "turntable FRAMES [center X Y Z] [axis X Y Z] [degrees DEG]",
                                    1,
@@ -29,13 +35,25 @@ double finiteNumber(const Token *token) {
     return coordinate(token);
 }
 
+// "the previous key's frame 4 (line 12)", or the frame-1 line's, for time-order errors.
+template <typename Key>
+std::string previousKeyText(const std::vector<Key> &keys, const char *frameOneLine) {
+    if (keys.empty())
+        return std::string("frame 1 (") + frameOneLine + ")";
+    return "the previous key's frame " + formatNumber(keys.back().frame) + " (line " +
+           std::to_string(keys.back().line) + ")";
+}
+
+std::string axesText(const std::vector<MeshRotation> &rotations) {
+    std::string text;
+    for (const MeshRotation &r : rotations)
+        text += std::string(text.empty() ? "" : ", ") + char('x' + r.axis);
+    return text;
+}
+
 } // namespace
 
 void cameraKey(SceneBuilder &builder, const DirectiveArgs &args) {
-    // A key animates the line it follows: only the camera's in this version.
-    if (builder.previousKeyword != "camera" && builder.previousKeyword != "key")
-        throw LineError("'key' must follow the camera line or another key (it animates the camera "
-                        "line above it)");
     if (builder.turntableLine != 0)
         throw LineError("the camera already turns by the turntable at line " +
                         std::to_string(builder.turntableLine) + "; keys and a turntable exclude "
@@ -47,10 +65,7 @@ void cameraKey(SceneBuilder &builder, const DirectiveArgs &args) {
     double previous = keys.empty() ? 1.0 : keys.back().frame;
     if (!(key.frame > previous))
         throw LineError("key frame " + formatNumber(key.frame) + " must come after " +
-                        (keys.empty() ? std::string("frame 1 (the camera line's)")
-                                      : "the previous key's frame " + formatNumber(previous) +
-                                            " (line " + std::to_string(keys.back().line) + ")") +
-                        ": keys go in time order");
+                        previousKeyText(keys, "the camera line's") + ": keys go in time order");
     key.camera = keys.empty() ? builder.scene.camera : keys.back().camera;
     if (const KeyedValues *eye = args.find("eye"))
         key.camera.eye = pointAt(eye->values);
@@ -78,6 +93,59 @@ void cameraKey(SceneBuilder &builder, const DirectiveArgs &args) {
     }
     checkCameraView(key.camera, "key");
     keys.push_back(key);
+}
+
+void placeKey(SceneBuilder &builder, const DirectiveArgs &args) {
+    OpenPlacement &open = *builder.lastPlace;
+    std::vector<PlacementKey> &keys = open.track.keys; // keys[0]: the place line, frame 1
+    PlacementKey key;
+    key.frame = finiteNumber(args.positional[0]);
+    key.line = builder.line;
+    std::vector<PlacementKey> later(keys.begin() + 1, keys.end());
+    if (!(key.frame > keys.back().frame))
+        throw LineError("key frame " + formatNumber(key.frame) + " must come after " +
+                        previousKeyText(later, "the place line's") + ": keys go in time order");
+    MeshTransform given;
+    for (const KeyedValues &kv : args.keyed)
+        placementValue(kv, given);
+    key.transform = keys.back().transform;
+    if (args.find("scale"))
+        key.transform.scale = given.scale;
+    if (args.find("translate"))
+        key.transform.translation = given.translation;
+    if (args.find("rotate")) {
+        // Each angle is keyed on its own, so a key names every rotation of its place line.
+        const std::vector<MeshRotation> &placed = keys.front().transform.rotations;
+        bool sameAxes = given.rotations.size() == placed.size();
+        for (size_t r = 0; sameAxes && r < placed.size(); ++r)
+            sameAxes = given.rotations[r].axis == placed[r].axis;
+        if (!sameAxes)
+            throw LineError(
+                placed.empty()
+                    ? "the place line (line " + std::to_string(keys.front().line) +
+                          ") has no rotate: a key turns only the rotations of its place line "
+                          "(give it 'rotate AXIS 0' to start from)"
+                    : "a key's rotations must be those of its place line (line " +
+                          std::to_string(keys.front().line) + "), about " +
+                          axesText(placed) + " in that order; this key gives " +
+                          axesText(given.rotations));
+        key.transform.rotations = given.rotations;
+    }
+    if (open.placed) {
+        Instance instance = placedInstance(key.transform, open.track.centre);
+        if (std::string problem = placementProblem(instance, open.track.boxMin,
+                                                   open.track.boxMax, open.prototype);
+            !problem.empty())
+            throw LineError(problem);
+    }
+    keys.push_back(key);
+    if (!open.placed)
+        return;
+    std::vector<PlacementTrack> &tracks = builder.scene.placementTracks;
+    if (tracks.empty() || tracks.back().instance != open.track.instance)
+        tracks.push_back(open.track);
+    else
+        tracks.back() = open.track;
 }
 
 void turntable(SceneBuilder &builder, const DirectiveArgs &args) {
@@ -117,9 +185,9 @@ void interpolate(SceneBuilder &builder, const DirectiveArgs &args) {
                         std::to_string(builder.interpolateLine) + ")");
     const std::string &mode = args.positional[0]->text;
     if (mode == "linear")
-        builder.scene.cameraAnimation.interpolation = KeyInterpolation::Linear;
+        builder.scene.keyInterpolation = KeyInterpolation::Linear;
     else if (mode == "catmull-rom")
-        builder.scene.cameraAnimation.interpolation = KeyInterpolation::CatmullRom;
+        builder.scene.keyInterpolation = KeyInterpolation::CatmullRom;
     else
         throw LineError("interpolate takes 'linear' or 'catmull-rom', got '" + mode + "'");
     builder.interpolateLine = builder.line;

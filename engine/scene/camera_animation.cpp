@@ -7,22 +7,11 @@
 #include <vector>
 
 #include "core/error.h"
+#include "scene/key_interpolation.h"
 #include "scene/number_parser.h"
 
 namespace prism {
 namespace {
-
-// Cubic Hermite basis on [0, 1] (the four weights of p0, m0, p1, m1).
-struct Hermite {
-    double h00, h10, h01, h11;
-    explicit Hermite(double u) {
-        double u2 = u * u, u3 = u2 * u;
-        h00 = 2.0 * u3 - 3.0 * u2 + 1.0;
-        h10 = u3 - 2.0 * u2 + u;
-        h01 = -2.0 * u3 + 3.0 * u2;
-        h11 = u3 - u2;
-    }
-};
 
 // The keys as one list: the camera line at frame 1, then the `key` lines.
 std::vector<CameraKey> allKeys(const Scene &scene) {
@@ -33,53 +22,28 @@ std::vector<CameraKey> allKeys(const Scene &scene) {
     return keys;
 }
 
-// One value through the keys: `get` picks it from a camera. Linear between keys i and i + 1, or
-// Catmull-Rom with non-uniform tangents (the slope over the neighbouring keys' frames, one-sided
-// at the ends), so that keys far apart in time do not overshoot.
-template <typename Value, typename Get>
-Value blend(const std::vector<CameraKey> &keys, size_t i, double u, KeyInterpolation mode,
-            Get get) {
-    const Value a = get(keys[i].camera), b = get(keys[i + 1].camera);
-    if (mode == KeyInterpolation::Linear)
-        return a + (b - a) * u;
-    auto slope = [&](size_t k) {
-        size_t before = k == 0 ? 0 : k - 1, after = std::min(k + 1, keys.size() - 1);
-        return (get(keys[after].camera) - get(keys[before].camera)) /
-               (keys[after].frame - keys[before].frame);
-    };
-    double span = keys[i + 1].frame - keys[i].frame;
-    Hermite h(u);
-    return a * h.h00 + slope(i) * (h.h10 * span) + b * h.h01 + slope(i + 1) * (h.h11 * span);
-}
-
 Camera keyedCamera(const Scene &scene, double frame) {
     std::vector<CameraKey> keys = allKeys(scene);
     if (frame <= keys.front().frame)
         return keys.front().camera;
     if (frame >= keys.back().frame)
         return keys.back().camera;
-    // The segment [keys[i].frame, keys[i + 1].frame) that holds the frame.
-    size_t i = size_t(std::distance(keys.begin(),
-                                    std::upper_bound(keys.begin(), keys.end(), frame,
-                                                     [](double f, const CameraKey &k) {
-                                                         return f < k.frame;
-                                                     }))) -
-               1;
-    double u = (frame - keys[i].frame) / (keys[i + 1].frame - keys[i].frame);
-    if (u == 0.0)
+    KeySegment segment = keySegment(keys, frame);
+    size_t i = segment.i;
+    if (segment.u == 0.0)
         return keys[i].camera;
-    KeyInterpolation mode = scene.cameraAnimation.interpolation;
+    KeyInterpolation mode = scene.keyInterpolation;
     Camera c = keys[i].camera;
-    c.eye = blend<glm::dvec3>(keys, i, u, mode, [](const Camera &k) { return k.eye; });
-    c.look = blend<glm::dvec3>(keys, i, u, mode, [](const Camera &k) { return k.look; });
-    c.up = glm::vec3(blend<glm::dvec3>(keys, i, u, mode,
-                                       [](const Camera &k) { return glm::dvec3(k.up); }));
+    c.eye = blendKeys<glm::dvec3>(keys, segment, mode, [](const CameraKey &k) { return k.camera.eye; });
+    c.look = blendKeys<glm::dvec3>(keys, segment, mode, [](const CameraKey &k) { return k.camera.look; });
+    c.up = glm::vec3(blendKeys<glm::dvec3>(
+        keys, segment, mode, [](const CameraKey &k) { return glm::dvec3(k.camera.up); }));
     if (c.isOrtho())
-        c.orthoHeight = float(blend<double>(keys, i, u, mode,
-                                            [](const Camera &k) { return double(k.orthoHeight); }));
+        c.orthoHeight = float(blendKeys<double>(
+            keys, segment, mode, [](const CameraKey &k) { return double(k.camera.orthoHeight); }));
     else
-        c.fovDegrees = float(blend<double>(keys, i, u, mode,
-                                           [](const Camera &k) { return double(k.fovDegrees); }));
+        c.fovDegrees = float(blendKeys<double>(
+            keys, segment, mode, [](const CameraKey &k) { return double(k.camera.fovDegrees); }));
     // A spline can overshoot where a straight line would not: into eye = look, a degenerate
     // up, a field of view out of (0, 180) or a parallel camera of no height.
     glm::dvec3 forward = c.look - c.eye;

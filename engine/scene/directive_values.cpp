@@ -47,4 +47,30 @@ void checkCameraView(const Camera &camera, const std::string &what) {
                         " must not be zero or parallel to the view direction");
 }
 
+namespace {
+
+int rotationAxis(const Token *token) {
+    if (token->text == "x" || token->text == "y" || token->text == "z")
+        return token->text[0] - 'x';
+    throw LineError("rotate axis must be x, y or z, got '" + token->text + "'");
+}
+
+} // namespace
+
+bool placementValue(const KeyedValues &kv, MeshTransform &transform) {
+    if (kv.key == "scale") {
+        transform.scale = number(kv.values[0]);
+        if (!(transform.scale > 0.0))
+            throw LineError("'scale' must be > 0, got " + formatNumber(transform.scale));
+    } else if (kv.key == "rotate") {
+        transform.rotations.push_back(
+            MeshRotation{rotationAxis(kv.values[0]), number(kv.values[1])});
+    } else if (kv.key == "translate") {
+        transform.translation = pointAt(kv.values);
+    } else {
+        return false;
+    }
+    return true;
+}
+
 } // namespace prism

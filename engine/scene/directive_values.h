@@ -7,6 +7,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/directive_args.h"
+#include "scene/mesh_transform.h"
 #include "scene/scene.h"
 #include "scene/tokenizer.h"
 
@@ -24,5 +26,9 @@ std::string formatted(glm::dvec3 v); // "X Y Z" for messages
 // Throws LineError unless `camera` sees something: eye and look apart, up not zero nor along the
 // view. `what` names it in the message ("camera", "key").
 void checkCameraView(const Camera &camera, const std::string &what);
+
+// `scale`, `rotate` and `translate`, as `mesh`, `place` and a place's `key` take them, into
+// `transform` (a rotation is appended); false for other keys.
+bool placementValue(const KeyedValues &kv, MeshTransform &transform);
 
 } // namespace prism

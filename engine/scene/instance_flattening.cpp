@@ -24,6 +24,7 @@ Scene flattenInstances(Scene scene) {
     }
     scene.instances.clear();
     scene.prototypes.clear();
+    scene.placementTracks.clear(); // the triangles stay where the instances are now
     return scene;
 }
 

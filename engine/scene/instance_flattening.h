@@ -10,8 +10,8 @@ namespace prism {
 // The triangles of `instance`, placed (positions, and vertex normals turned with it).
 std::vector<Triangle> placedTriangles(const Scene &scene, const Instance &instance);
 
-// `scene` with every instance's triangles appended to Scene::triangles and no prototypes or
-// instances left.
+// `scene` with every instance's triangles appended to Scene::triangles (where Scene::instances
+// puts them now) and no prototypes, instances or placement keys left.
 Scene flattenInstances(Scene scene);
 
 } // namespace prism

@@ -8,6 +8,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/mesh_transform.h"
+
 namespace prism {
 
 // Positions are double on the host so that a scene far from its file's origin loses nothing
@@ -107,6 +109,25 @@ struct Instance {
     glm::dvec3 translation{0.0};
     int32_t material = kOwnMaterials; // otherwise every face of this placement uses it
     glm::dvec3 toWorld(const glm::dvec3 &p) const { return translation + scale * (rotation * p); }
+    bool operator==(const Instance &) const = default;
+};
+
+// Keyed placements (format 1.2, docs/scene-format.md, "Animation"): `key` lines under a `place`
+// line move its instance. Every key holds the whole placement as its line and the keys above it
+// give it: in the file's coordinates, the prototype's centre not yet taken in (Scene::origin is
+// taken off at each frame), a key's rotations about the place line's axes in its order.
+struct PlacementKey {
+    double frame = 1.0;
+    MeshTransform transform;
+    int line = 0; // the `key` line (keys[0]: the `place` line, frame 1)
+};
+
+struct PlacementTrack {
+    uint32_t instance = 0;               // into Scene::instances
+    Instance first;                      // at frame 1 (moved and rounded as Scene::instances)
+    glm::dvec3 centre{0.0};              // the prototype's, as `place` takes it in
+    glm::dvec3 boxMin{0.0}, boxMax{0.0}; // the prototype's box, centred
+    std::vector<PlacementKey> keys;      // keys[0] is the place line; at least one more
 };
 
 // Camera animation (format 1.2, docs/scene-format.md, "Animation"). The `camera` line is the
@@ -133,7 +154,6 @@ struct Turntable {
 struct CameraAnimation {
     std::vector<CameraKey> keys; // after frame 1, frames increasing; empty without `key` lines
     std::optional<Turntable> turntable;
-    KeyInterpolation interpolation = KeyInterpolation::Linear;
     bool animated() const { return !keys.empty() || turntable.has_value(); }
 };
 
@@ -143,6 +163,10 @@ struct Scene {
     glm::dvec3 origin{0.0};
     Camera camera; // at frame 1 (cameraAt in scene/camera_animation.h gives any frame's)
     CameraAnimation cameraAnimation;
+    // Instances that move (scene/placement_animation.h gives their placements at any frame);
+    // Scene::instances holds every instance at frame 1.
+    std::vector<PlacementTrack> placementTracks;
+    KeyInterpolation keyInterpolation = KeyInterpolation::Linear; // every key's, by `interpolate`
     glm::vec3 background{0.0f};
     Environment environment;
     glm::vec3 ambient{1.0f};

@@ -10,6 +10,7 @@
 #include "scene/mesh_importer.h"
 #include "scene/number_parser.h"
 #include "scene/obj_loader.h"
+#include "scene/placement.h"
 #include "scene/text_file.h"
 
 #include <cmath>
@@ -244,33 +245,10 @@ void face(SceneBuilder &builder, const DirectiveArgs &args) {
     warnDropped(builder, dropped, "");
 }
 
-int rotationAxis(const Token *token) {
-    if (token->text == "x" || token->text == "y" || token->text == "z")
-        return token->text[0] - 'x';
-    throw LineError("rotate axis must be x, y or z, got '" + token->text + "'");
-}
-
 // `smooth` without an angle: facets meeting at more than 60 degrees stay sharp. A cube's edges
 // (90) and a tetrahedron's (109) keep them; a sphere or teapot tessellated at 15-30 degrees a
 // step, and the bunny's (mostly under 40), come out smooth.
 constexpr double kDefaultCreaseDegrees = 60.0;
-
-// `scale`, `rotate` and `translate`, as `mesh` and `place` take them; false for other keys.
-bool placementKey(const KeyedValues &kv, MeshTransform &transform) {
-    if (kv.key == "scale") {
-        transform.scale = number(kv.values[0]);
-        if (!(transform.scale > 0.0))
-            throw LineError("'scale' must be > 0, got " + formatNumber(transform.scale));
-    } else if (kv.key == "rotate") {
-        transform.rotations.push_back(
-            MeshRotation{rotationAxis(kv.values[0]), number(kv.values[1])});
-    } else if (kv.key == "translate") {
-        transform.translation = pointAt(kv.values);
-    } else {
-        return false;
-    }
-    return true;
-}
 
 void checkNewPrototypeName(const SceneBuilder &builder, const std::string &name) {
     if (auto earlier = builder.prototypeByName.find(name); earlier != builder.prototypeByName.end())
@@ -316,7 +294,7 @@ void mesh(SceneBuilder &builder, const DirectiveArgs &args) {
         request.namedMaterial = materialNamed(builder, args.positional[1]);
     request.fallbackMaterial = builder.currentMaterial;
     for (const KeyedValues &kv : args.keyed) {
-        if (placementKey(kv, request.transform))
+        if (placementValue(kv, request.transform))
             continue;
         if (kv.key == "smooth") {
             double crease = kv.values.empty() ? kDefaultCreaseDegrees : number(kv.values[0]);
@@ -341,22 +319,8 @@ void mesh(SceneBuilder &builder, const DirectiveArgs &args) {
         definePrototype(builder, as->values[0]->text, std::move(prototype));
 }
 
-// True when `instance` keeps every corner of the prototype's box within float range.
-bool placedBoxFitsFloat(const Instance &instance, const PrototypeEntry &entry) {
-    for (int corner = 0; corner < 8; ++corner) {
-        glm::dvec3 p((corner & 1) ? entry.boxMax.x : entry.boxMin.x,
-                     (corner & 2) ? entry.boxMax.y : entry.boxMin.y,
-                     (corner & 4) ? entry.boxMax.z : entry.boxMin.z);
-        if (!fitsFloat(instance.toWorld(p)))
-            return false;
-    }
-    return true;
-}
-
-// `place ID [NAME] ...`: one instance of the prototype, which puts the mesh's vertex v (as the
-// `mesh ... as` line placed it, before centring) at translate + scale * R * v, R the rotations
-// in the order written, exactly as a `mesh` line with these keys would. The prototype holds
-// v - centre, so the instance's translation takes the centre in.
+// `place ID [NAME] ...`: one instance of the prototype (scene/placement.h: placedInstance). The
+// place line stays open for `key` lines under it, which move the instance.
 void place(SceneBuilder &builder, const DirectiveArgs &args) {
     const std::string &name = args.positional[0]->text;
     auto found = builder.prototypeByName.find(name);
@@ -364,32 +328,34 @@ void place(SceneBuilder &builder, const DirectiveArgs &args) {
         throw LineError("unknown prototype '" + name + "' (a 'mesh PATH ... as " + name +
                         "' line above it defines one)");
     const PrototypeEntry &entry = found->second;
-    Instance instance;
+    int32_t material = kOwnMaterials;
     if (args.positional.size() > 1)
-        instance.material = int32_t(materialNamed(builder, args.positional[1]));
+        material = int32_t(materialNamed(builder, args.positional[1]));
     MeshTransform transform;
     for (const KeyedValues &kv : args.keyed)
-        placementKey(kv, transform);
+        placementValue(kv, transform);
+    OpenPlacement open;
+    open.prototype = name;
+    open.track.centre = entry.centre;
+    open.track.boxMin = entry.boxMin;
+    open.track.boxMax = entry.boxMax;
+    open.track.keys.push_back(PlacementKey{1.0, transform, builder.line});
+    builder.lastPlace = open;
     if (!entry.index) {
         builder.warn("prototype '" + name + "' (line " + std::to_string(entry.line) +
                      ") has no triangles; nothing is placed");
         return;
     }
+    Instance instance = placedInstance(transform, entry.centre);
     instance.prototype = *entry.index;
-    instance.scale = transform.scale;
-    instance.rotation = rotationOf(transform.rotations);
-    instance.translation =
-        transform.translation + transform.scale * (instance.rotation * entry.centre);
-    if (!placedBoxFitsFloat(instance, entry))
-        throw LineError("the placement takes the bounding box of prototype '" + name +
-                        "' out of the range of a 32-bit float");
-    // The tracer takes rays into the prototype's space by the inverse map (1 / scale, and the
-    // translation over the scale), in 32-bit floats too.
-    if (!fitsFloat(glm::dvec3(1.0 / instance.scale)) ||
-        !fitsFloat(instance.translation / instance.scale))
-        throw LineError("'scale' " + formatNumber(instance.scale) +
-                        " is too small for the placement to be undone in 32-bit floats");
+    instance.material = material;
+    if (std::string problem = placementProblem(instance, entry.boxMin, entry.boxMax, name);
+        !problem.empty())
+        throw LineError(problem);
     checkInstanceLimit(builder.scene.instances.size() + 1, builder.limits.maxInstances);
+    builder.lastPlace->track.instance = uint32_t(builder.scene.instances.size());
+    builder.lastPlace->track.first = instance;
+    builder.lastPlace->placed = true;
     builder.scene.instances.push_back(instance);
 }
 
@@ -465,7 +431,7 @@ const std::map<std::string_view, Directive> &directives() {
            2,
            {{"scale", 1}, {"rotate", 2, true}, {"translate", 3}}},
           place}},
-        {"key", {kKeySpec, cameraKey}},
+        {"key", {kCameraKeySpec, cameraKey}},
         {"turntable", {kTurntableSpec, turntable}},
         {"interpolate", {kInterpolateSpec, interpolate}},
     };
@@ -480,8 +446,21 @@ void applyDirective(SceneBuilder &builder, std::span<const Token> tokens) {
     if (found == directives().end())
         throw LineError("unknown directive '" + keyword.text + "'");
     const Directive &directive = found->second;
+    if (directive.spec.keyword == "key") {
+        // A key animates the camera or place line above it (other keys between): its keys are
+        // that line's.
+        if (builder.keyTarget.empty())
+            throw LineError("'key' must follow the camera line, a place line or another key (it "
+                            "animates the line above it)");
+        if (builder.keyTarget == "place")
+            placeKey(builder, splitDirectiveArgs(kPlaceKeySpec, tokens.subspan(1)));
+        else
+            cameraKey(builder, splitDirectiveArgs(kCameraKeySpec, tokens.subspan(1)));
+        return;
+    }
     directive.apply(builder, splitDirectiveArgs(directive.spec, tokens.subspan(1)));
-    builder.previousKeyword = directive.spec.keyword; // what a following `key` animates
+    bool animatable = directive.spec.keyword == "camera" || directive.spec.keyword == "place";
+    builder.keyTarget = animatable ? directive.spec.keyword : std::string_view();
 }
 
 } // namespace prism

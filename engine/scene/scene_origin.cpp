@@ -25,6 +25,8 @@ void moveOrigin(Scene &scene, glm::dvec3 point) {
             p -= point;
     for (Instance &i : scene.instances) // prototypes live in their own space
         i.translation -= point;
+    for (PlacementTrack &track : scene.placementTracks)
+        track.first.translation -= point;
 }
 
 namespace {
@@ -43,6 +45,13 @@ glm::dvec3 asFloat(const glm::dvec3 &p) {
 
 } // namespace
 
+void roundToFloat(Instance &instance) {
+    instance.translation = asFloat(instance.translation);
+    instance.scale = toFloat(instance.scale);
+    for (int c = 0; c < 3; ++c)
+        instance.rotation[c] = asFloat(instance.rotation[c]);
+}
+
 void centerOn(Scene &scene, glm::dvec3 point) {
     moveOrigin(scene, point);
     scene.camera.eye = asFloat(scene.camera.eye);
@@ -60,12 +69,10 @@ void centerOn(Scene &scene, glm::dvec3 point) {
     for (Triangle &t : scene.triangles)
         for (glm::dvec3 &p : t.p)
             p = asFloat(p);
-    for (Instance &i : scene.instances) {
-        i.translation = asFloat(i.translation);
-        i.scale = toFloat(i.scale);
-        for (int c = 0; c < 3; ++c)
-            i.rotation[c] = asFloat(i.rotation[c]);
-    }
+    for (Instance &i : scene.instances)
+        roundToFloat(i);
+    for (PlacementTrack &track : scene.placementTracks)
+        roundToFloat(track.first);
     for (MeshPrototype &m : scene.prototypes)
         for (Triangle &t : m.triangles)
             for (glm::dvec3 &p : t.p)

@@ -24,6 +24,10 @@ void moveOrigin(Scene &scene, glm::dvec3 point);
 // the uncentred scene (as prism-view keeps it), not from a centred one.
 void centerOn(Scene &scene, glm::dvec3 point);
 
+// An instance's placement rounded as centerOn rounds it: a keyed placement's at a later frame
+// (scene/placement_animation.h) is rounded the same way as frame 1's.
+void roundToFloat(Instance &instance);
+
 // centerOn(scene, scene.camera.eye): what every renderer does to a loaded scene. An animated
 // scene is centred on its frame-1 eye whatever frames are rendered, so that a frame is the same
 // image in any range, chunk or tile of a farm (scene/camera_animation.h gives the other frames'

@@ -25,6 +25,13 @@ struct PrototypeEntry {
     int line = 0;                        // the `mesh ... as` line
 };
 
+// The last `place` line, which `key` lines under it move.
+struct OpenPlacement {
+    std::string prototype;
+    PlacementTrack track; // its instance and keys; keys[0] is the place line's
+    bool placed = false;  // false: the prototype has no triangles and nothing was placed
+};
+
 struct SceneBuilder {
     std::string fileName;          // as shown in messages
     std::filesystem::path baseDir; // relative paths resolve here
@@ -40,7 +47,10 @@ struct SceneBuilder {
     int cameraLine = 0;                   // 0 until a camera line
     int environmentLine = 0;              // 0 until an environment line
     int turntableLine = 0, interpolateLine = 0; // 0 until such a line
-    std::string_view previousKeyword;           // of the last directive, for `key`
+    // The directive a `key` line animates: "camera" or "place" when the last line other than a
+    // key was one, else empty.
+    std::string_view keyTarget;
+    std::optional<OpenPlacement> lastPlace;
     std::vector<glm::dvec3> faceVertices; // this file's `v` lines, for `f`
     std::unordered_map<std::string, PrototypeEntry> prototypeByName;
     uint64_t prototypeTriangles = 0; // in all of Scene::prototypes

@@ -17,7 +17,26 @@ PreparedScene prepareScene(Scene scene, const GridOptions &options, const DiskCa
     prepared.grid = buildGridCached(prepared.scene, options, GridCachePolicy{cache},
                                     &prepared.gridCache);
     prepared.buildMs = build.elapsedMs();
+    prepared.gridOptions = options;
     return prepared;
+}
+
+bool moveToFrame(PreparedScene &prepared, double frame, double *rebuildMs) {
+    if (rebuildMs)
+        *rebuildMs = 0.0;
+    if (!placementsAnimated(prepared.scene) || frame == prepared.frame)
+        return false;
+    std::vector<Instance> instances = instancesAt(prepared.scene, frame);
+    prepared.frame = frame;
+    if (instances == prepared.scene.instances)
+        return false;
+    Timer build;
+    prepared.scene.instances = std::move(instances);
+    prepared.grid =
+        rebuildInstanceLevel(prepared.scene, std::move(prepared.grid), prepared.gridOptions);
+    if (rebuildMs)
+        *rebuildMs = build.elapsedMs();
+    return true;
 }
 
 Camera toSceneCoordinates(const PreparedScene &prepared, Camera camera) {

@@ -6,6 +6,7 @@
 // coordinates with toSceneCoordinates.
 #include "accel/grid.h"
 #include "accel/grid_cache.h"
+#include "scene/placement_animation.h"
 #include "scene/scene.h"
 
 namespace prism {
@@ -17,10 +18,21 @@ struct PreparedScene {
     Grid grid;
     GridCacheOutcome gridCache;
     double buildMs = 0.0; // the grid's build or cache read
+    GridOptions gridOptions; // what the grid was built with
+    // The frame Scene::instances and the grid hold: 1 until moveToFrame moves keyed instances.
+    double frame = 1.0;
 };
 
 // `cache` may be null (no grid cache).
 PreparedScene prepareScene(Scene scene, const GridOptions &options, const DiskCache *cache);
+
+// Moves the keyed instances (scene/placement_animation.h) to `frame` and builds the grid's level
+// they are in again, the prototypes' mesh grids kept (Grid::meshGrids). Returns whether any
+// instance moved, and so whether a tracer of the scene needs the new arrays
+// (RayTracer::setScene); a scene without keyed placements, or a frame where none has moved
+// (held before the first key and after the last), costs nothing. `rebuildMs`, where given,
+// gets the build's time. Throws prism::Error as placementAt does.
+bool moveToFrame(PreparedScene &prepared, double frame, double *rebuildMs = nullptr);
 
 // A camera in the file's coordinates, moved to the prepared scene's.
 Camera toSceneCoordinates(const PreparedScene &prepared, Camera camera);

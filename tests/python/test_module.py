@@ -68,6 +68,22 @@ def test_a_frame_set_from_python_is_prism_render_frame(renderer, tmp_path):
     assert not np.array_equal(first, rgb)
 
 
+def test_a_frame_moves_keyed_instances_as_prism_render_does(renderer, tmp_path):
+    path = SCENES / "moving-instances.scene"
+    scene = prism.load(str(path), grid="regular")
+    assert scene.animated and scene.last_frame == 48
+    first = renderer.render(scene, 48, 36, depth=2)["rgb"]
+    scene.frame = 30
+    moved = renderer.render(scene, 48, 36, depth=2)["rgb"]
+    cli = render_cli(tmp_path, path, "--frames", "30", "--size", "48x36", "--depth", "2",
+                     "--grid", "regular")
+    for k, channel in enumerate("RGB"):
+        assert np.array_equal(moved[:, :, k], cli[channel]), channel
+    assert not np.array_equal(first, moved)
+    scene.frame = 1
+    assert np.array_equal(renderer.render(scene, 48, 36, depth=2)["rgb"], first)
+
+
 def test_arrays_are_c_contiguous_float32_height_width_channels(renderer):
     # A unit sphere 5 units ahead: hit in the middle, missed in the corners.
     scene = prism.Scene.from_string("camera eye 0 0 5 look 0 0 0 fov 40\nsphere 0 0 0 1\n")

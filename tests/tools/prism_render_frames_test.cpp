@@ -145,4 +145,60 @@ TEST_F(PrismRenderFrames, KeysOutOfTimeOrderAreAnErrorAtTheirLine) {
     EXPECT_EQ(entries().size(), 1u);
 }
 
+// Two tetrahedra placed from one prototype over a floor; the first slides and turns over eight
+// frames, the second holds still.
+constexpr const char *kTetra =
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+std::string movingScene(const std::string &firstPlace) {
+    return "camera eye 0 1.5 -5 look 0 0.5 0 fov 45\n"
+           "light 3 5 -4\n"
+           "plane 0 0 0 0 1 0\n"
+           "mesh tetra.obj as t\n" +
+           firstPlace + "\nplace t translate 0.5 0 1\n";
+}
+
+TEST_F(PrismRenderFrames, MovingInstancesAreTheStillSceneAtTheirKeys) {
+    write("tetra.obj", kTetra);
+    fs::path moving = write("moving.scene", movingScene("place t rotate y 0 translate -1.5 0 0\n"
+                                                        "key 9 rotate y 120 translate 0.8 0.2 -1"));
+    fs::path still = write("still.scene", movingScene("place t rotate y 120 translate 0.8 0.2 -1"));
+    std::string common = " --size 32x24 --spp 2 --depth 2 --grid regular --quiet ";
+    CliResult range = run(moving.string() + common + "--frames 1-9:4 --stats -o " +
+                          (dir() / "m.#.exr").string());
+    ASSERT_EQ(range.exitCode, 0) << range.out;
+    ASSERT_EQ(run(still.string() + common + "-o " + (dir() / "still.exr").string()).exitCode, 0);
+    ASSERT_EQ(run(moving.string() + common + "--frames 5 -o " + (dir() / "alone5.exr").string())
+                  .exitCode,
+              0);
+    EXPECT_EQ(pixels("m.9.exr"), pixels("still.exr")) << "frame 9 is the place line at key 9";
+    EXPECT_EQ(pixels("m.5.exr"), pixels("alone5.exr")) << "frame 5 alone and in the range";
+    EXPECT_NE(pixels("m.1.exr"), pixels("m.5.exr"));
+    EXPECT_NE(pixels("m.5.exr"), pixels("m.9.exr"));
+    nlohmann::json stats = nlohmann::json::parse(range.stdoutOnly);
+    ASSERT_EQ(stats["per_frame"].size(), 3u);
+    EXPECT_EQ(stats["per_frame"][0]["move_ms"].get<double>(), 0.0) << "frame 1 as loaded";
+    EXPECT_GT(stats["per_frame"][1]["move_ms"].get<double>(), 0.0) << "moved: built, uploaded";
+
+    // The CPU reference moves the instances too.
+    std::string cpu = common + "--backend cpu ";
+    ASSERT_EQ(run(moving.string() + cpu + "--frames 1-9:8 -o " + (dir() / "c.#.exr").string())
+                  .exitCode,
+              0);
+    ASSERT_EQ(run(still.string() + cpu + "-o " + (dir() / "cstill.exr").string()).exitCode, 0);
+    EXPECT_EQ(pixels("c.9.exr"), pixels("cstill.exr"));
+    EXPECT_NE(pixels("c.1.exr"), pixels("c.9.exr"));
+}
+
+TEST_F(PrismRenderFrames, BadPlacementKeysAreAnErrorAtTheirLine) {
+    write("tetra.obj", kTetra);
+    fs::path bad = write("bad.scene", movingScene("place t rotate y 0\nkey 9 rotate x 40"));
+    CliResult r = run(bad.string() + " --frames 1-9 --quiet -o " + (dir() / "b.#.exr").string());
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find(bad.string() + ":6: a key's rotations must be those of its place line "
+                                        "(line 5), about y in that order; this key gives x"),
+              std::string::npos)
+        << r.out;
+    EXPECT_FALSE(fs::exists(dir() / "b.1.exr"));
+}
+
 } // namespace

@@ -65,6 +65,9 @@ public:
     virtual FrameOutcome render(const Camera &camera, const std::string &label,
                                 const std::string &after, ProgressLine &progress) = 0;
     virtual std::string device() const = 0;
+    // The scene given at construction has had its instances moved and its grid rebuilt
+    // (moveToFrame): the next frames must see them.
+    virtual void sceneMoved(const Scene &scene, const Grid &grid) = 0;
 };
 
 class VulkanFrameSource : public FrameSource {
@@ -75,6 +78,9 @@ public:
     FrameOutcome render(const Camera &camera, const std::string &label, const std::string &after,
                         ProgressLine &progress) override;
     std::string device() const override { return context_->deviceName(); }
+    void sceneMoved(const Scene &scene, const Grid &grid) override {
+        tracer_->setScene(scene, grid);
+    }
     const VulkanPhases &phases() const { return phases_; }
     std::vector<ArrayBytes> sceneArrays() const { return tracer_->sceneArrayBytes(); }
     // Writes the device's pipeline cache back when it changed; bytes written (0: unchanged).
@@ -94,6 +100,7 @@ public:
     FrameOutcome render(const Camera &camera, const std::string &label, const std::string &after,
                         ProgressLine &progress) override;
     std::string device() const override { return "CPU reference (double precision)"; }
+    void sceneMoved(const Scene &, const Grid &) override {} // it reads the scene each frame
 
 private:
     const RenderOptions &o_;
