@@ -30,10 +30,11 @@ void writeExr(const std::filesystem::path &file, const OutputImage &image,
         spec.full_width = image.fullWidth;
         spec.full_height = image.fullHeight;
     }
-    // Lossless: floats come back bit for bit. Level 1 rather than zlib's default 6: a
-    // 1024x768 frame compresses in a third of the time for files 3% larger, and in a range
-    // the write shares the cores with the next frame's trace (docs/benchmarks.md, "Frames").
-    spec.attribute("compression", "zip:1");
+    // Lossless, whichever (OutputImage::exrCompression): floats come back bit for bit. The
+    // default zlib at level 1 rather than its own 6: a 1024x768 frame compresses in a third of
+    // the time for files 3% larger, and in a range the write shares the cores with the next
+    // frame's trace (docs/benchmarks.md, "Frames").
+    spec.attribute("compression", image.exrCompression);
     addMetadata(spec, meta);
 
     const std::size_t pixelCount = static_cast<std::size_t>(image.width) * image.height;

@@ -64,6 +64,10 @@ void writeImage(const std::filesystem::path &path, const OutputImage &image,
                                 : "unsupported extension '" + path.extension().string() + "'") +
                        " (supported: .exr, .png)");
     checkShape(path, image);
+    const std::string &c = image.exrCompression;
+    if (c != "zip:1" && c != "zips:1" && c != "piz" && c != "rle" && c != "none")
+        fail(path, "EXR compression '" + c + "' is not one of the lossless zip:1, zips:1, piz, "
+                   "rle, none");
     checkDirectory(path);
 
     StagedFile staged(path); // removes the temporary file on any throw below

@@ -4,6 +4,7 @@
 #include "io/image_metadata.h"
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace prism {
@@ -18,6 +19,9 @@ struct OutputImage {
     std::vector<float> rgba;   // width*height*4, linear, row 0 = top
     std::vector<float> depth;  // empty or width*height: EXR channel "Z"
     std::vector<float> normal; // empty or width*height*3: EXR channels "N.X", "N.Y", "N.Z"
+    // EXR only: OpenEXR's compression as OpenImageIO names it, one of the lossless ones
+    // ("zip:1", "zips:1", "piz", "rle", "none"), so that floats come back bit for bit.
+    std::string exrCompression = "zip:1";
 };
 
 // By extension (case-insensitive):

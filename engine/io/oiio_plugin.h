@@ -18,7 +18,7 @@ namespace prism {
 
 // Raised whenever a function's signature or meaning changes: a library of another build is
 // refused instead of called wrongly.
-constexpr uint32_t kOiioPluginVersion = 1;
+constexpr uint32_t kOiioPluginVersion = 2; // 2: OutputImage::exrCompression
 
 struct OiioPluginTable {
     uint32_t version;

@@ -1,5 +1,6 @@
 // EXR output: float channels come back bit for bit, in place, with their names and with
 // every metadata attribute.
+#include "core/error.h"
 #include "io/image_reader.h"
 #include "io/image_writer.h"
 #include "temp_dir_fixture.h"
@@ -125,6 +126,46 @@ TEST_F(ExrWrite, ReplacesAnExistingFileAndLeavesNoTemporaryFiles) {
 TEST_F(ExrWrite, AcceptsAnUpperCaseExtension) {
     writeImage(dir() / "FRAME.EXR", awkwardImage(), {});
     EXPECT_EQ(readImage(dir() / "FRAME.EXR").channels, 8);
+}
+
+std::string stringAttribute(const LoadedImage &image, const std::string &name) {
+    for (const auto &[key, value] : image.metadata.strings)
+        if (key == name)
+            return value;
+    return "";
+}
+
+TEST_F(ExrWrite, EveryCompressionOnOfferIsLosslessAndNamedInTheHeader) {
+    OutputImage image = awkwardImage();
+    writeImage(dir() / "zip.exr", image, {});
+    const LoadedImage reference = readImage(dir() / "zip.exr");
+    EXPECT_EQ(stringAttribute(reference, "compression"), "zip");
+    for (const char *compression : {"zips:1", "piz", "rle", "none"}) {
+        image.exrCompression = compression;
+        std::string name = std::string(compression).substr(0, 4);
+        writeImage(dir() / (name + ".exr"), image, {});
+        const LoadedImage back = readImage(dir() / (name + ".exr"));
+        EXPECT_EQ(stringAttribute(back, "compression"), std::string(compression).substr(0, 4))
+            << compression;
+        ASSERT_EQ(back.pixels.size(), reference.pixels.size());
+        for (size_t k = 0; k < back.pixels.size(); ++k)
+            ASSERT_TRUE(sameBits(back.pixels[k], reference.pixels[k])) << compression << " " << k;
+    }
+}
+
+TEST_F(ExrWrite, ALossyOrUnknownCompressionIsRefusedBeforeAnyFile) {
+    OutputImage image = awkwardImage();
+    for (const char *compression : {"b44", "dwaa", "pxr24", "zip:6x", ""}) {
+        image.exrCompression = compression;
+        try {
+            writeImage(dir() / "lossy.exr", image, {});
+            ADD_FAILURE() << compression << " was accepted";
+        } catch (const Error &e) {
+            EXPECT_NE(std::string(e.what()).find("is not one of the lossless"), std::string::npos)
+                << e.what();
+        }
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir() / "lossy.exr"));
 }
 
 } // namespace

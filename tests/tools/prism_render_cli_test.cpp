@@ -380,4 +380,27 @@ TEST_F(PrismRenderCli, ProgressOnTheGpuGivesRaysPerSecond) {
     EXPECT_NE(r.out.find(" Mrays/s, ", line), std::string::npos) << r.out;
 }
 
+TEST_F(PrismRenderCli, ExrCompressionIsChosenAndLossless) {
+    fs::path scene = write("c.scene", "camera eye 0 0 5 look 0 0 0\nlight 2 2 5 radius 0.5\n"
+                                      "sphere 0 0 0 1\nplane 0 -1 0 0 1 0\n");
+    std::string common = scene.string() + " --size 24x16 --spp 3 --quiet -o ";
+    ASSERT_EQ(run(common + (dir() / "zip.exr").string()).exitCode, 0);
+    std::vector<float> zip = prism::readImage(dir() / "zip.exr").pixels;
+    for (const char *compression : {"rle", "none", "piz", "zips"}) {
+        fs::path out = dir() / (std::string(compression) + ".exr");
+        CliResult r = run(common + out.string() + " --exr-compression " + compression);
+        ASSERT_EQ(r.exitCode, 0) << r.out;
+        prism::LoadedImage back = prism::readImage(out);
+        EXPECT_EQ(back.pixels, zip) << compression;
+        auto named = std::find_if(back.metadata.strings.begin(), back.metadata.strings.end(),
+                                  [](const auto &kv) { return kv.first == "compression"; });
+        ASSERT_NE(named, back.metadata.strings.end());
+        EXPECT_EQ(named->second, compression);
+    }
+    CliResult lossy = run(common + (dir() / "b44.exr").string() + " --exr-compression b44");
+    EXPECT_NE(lossy.exitCode, 0);
+    EXPECT_NE(lossy.out.find("--exr-compression"), std::string::npos) << lossy.out;
+    EXPECT_FALSE(fs::exists(dir() / "b44.exr"));
+}
+
 } // namespace

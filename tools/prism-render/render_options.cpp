@@ -160,6 +160,14 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
         ->check(CLI::Range(0.01f, 1000.0f))
         ->default_val(density);
     app.add_option("--aov", aov, "Extra EXR channels: z (distance, Z), normal (N.X N.Y N.Z)");
+    std::string compression = "zip";
+    app.add_option("--exr-compression", compression,
+                   "An EXR's compression, lossless all: zip (zlib at level 1, the default), "
+                   "zips (zlib, one row a block), piz (wavelet: smallest, slowest), rle (fast, "
+                   "files ~1.5x zip's) or none (fastest, largest); a range's writes share the "
+                   "cores with its next frames")
+        ->check(CLI::IsMember({"zip", "zips", "piz", "rle", "none"}))
+        ->default_val("zip");
     app.add_option("--backend", backend,
                    "vulkan (GPU or lavapipe) or cpu (double-precision "
                    "reference)")
@@ -200,6 +208,10 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
         if (!aov.empty())
             parseAovs(aov, options);
         options.backend = backend == "cpu" ? Backend::Cpu : Backend::Vulkan;
+        // zlib's own default level 6 costs a third more time for files 3% smaller.
+        options.exrCompression = compression == "zip"    ? "zip:1"
+                                 : compression == "zips" ? "zips:1"
+                                                         : compression;
         std::string ext = lowerExtension(options.outputPath);
         if (ext != ".exr" && ext != ".png")
             throw Error("output " + output + ": unsupported extension; use .exr or .png");

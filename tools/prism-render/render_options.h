@@ -28,6 +28,7 @@ struct RenderOptions {
     GridOptions grid;
     std::string gridText = "auto";
     bool aovDepth = false, aovNormal = false;
+    std::string exrCompression = "zip:1"; // --exr-compression, as OpenImageIO names it
     Backend backend = Backend::Vulkan;
     uint32_t repeat = 1;
     bool stats = false;

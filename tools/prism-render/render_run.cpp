@@ -197,6 +197,7 @@ void runRender(const RenderOptions &o) {
             record.region = regionText(o.region);
         if (o.tileCount > 0)
             record.tile = std::to_string(o.tileIndex) + "/" + std::to_string(o.tileCount);
+        out.image.exrCompression = o.exrCompression;
         writer.push(job.output, std::move(out.image), renderMetadata(record));
 
         allFrameMs.insert(allFrameMs.end(), out.frameMs.begin(), out.frameMs.end());

@@ -3,7 +3,8 @@
 one run on this machine:
 
     tools/scripts/farm_bench.py [--bin build/bin] [--size 1024x768] [--frames 24] [--chunks 4,12]
-                                [--tiles 16] [--alone 4] [--rounds 2] [--no-slurm] [--work DIR]
+                                [--tiles 16] [--alone 4] [--rounds 2] [--exr-compression C]
+                                [--no-slurm] [--work DIR]
 
 1. The turntable's frames 1-N in one prism-render process: the whole run's wall time, and each
    frame's cost after the first (frame_ms: from its start to its image queued for writing, the
@@ -58,6 +59,8 @@ def main():
     parser.add_argument("--alone", type=int, default=4, help="frames also rendered alone")
     parser.add_argument("--rounds", type=int, default=2, help="runs of the range and of each "
                         "frame alone (the best of them is taken)")
+    parser.add_argument("--exr-compression", default="zip",
+                        help="prism-render --exr-compression for every image written")
     parser.add_argument("--no-slurm", action="store_true")
     parser.add_argument("--work", type=Path)
     args = parser.parse_args()
@@ -77,14 +80,15 @@ def main():
         shutil.rmtree(one, ignore_errors=True)
         one.mkdir()
         wall, result = timed([render, TURNTABLE, "--frames", f"1-{args.frames}", "--size",
-                              args.size, "--stats", "--quiet", "--no-cache", "-o",
+                              args.size, "--stats", "--quiet", "--no-cache",
+                              "--exr-compression", args.exr_compression, "-o",
                               one / "f.####.exr"])
         walls.append(wall)
         runs.append(json.loads(result.stdout))
         for frame in sampled:
             _, r = timed([render, TURNTABLE, "--frames", str(frame), "--size", args.size,
-                          "--repeat", "3", "--stats", "--quiet", "--no-cache", "-o",
-                          work / "alone.exr"])
+                          "--repeat", "3", "--stats", "--quiet", "--no-cache",
+                          "--exr-compression", args.exr_compression, "-o", work / "alone.exr"])
             own = json.loads(r.stdout)["trace_ms"]
             alone_ms[frame] = min(alone_ms.get(frame, own), own)
     wall = min(walls)
