@@ -199,6 +199,19 @@ TEST_F(PrismRenderFrames, BadPlacementKeysAreAnErrorAtTheirLine) {
               std::string::npos)
         << r.out;
     EXPECT_FALSE(fs::exists(dir() / "b.1.exr"));
+
+    // Good keys whose spline swings the scale below 0 at frame 4: the range fails before any
+    // frame is written, naming the scene, the frame and the keys' lines.
+    fs::path swing = write("swing.scene",
+                           movingScene("place t scale 1\nkey 3 scale 0.02\nkey 30 scale 0.02\n"
+                                       "key 31 scale 5\ninterpolate catmull-rom"));
+    r = run(swing.string() + " --frames 1-12 --quiet -o " + (dir() / "s.#.exr").string());
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find(swing.string() + ": frame 4: the placement between the keys of line 6 "
+                                          "and line 7 cannot be traced"),
+              std::string::npos)
+        << r.out;
+    EXPECT_FALSE(fs::exists(dir() / "s.1.exr")) << "no frame of a range that cannot finish";
 }
 
 } // namespace

@@ -25,7 +25,9 @@
 #include "progress_line.h"
 #include "render_metadata.h"
 #include "scene/camera_animation.h"
+#include "scene/placement_animation.h"
 #include "scene/scene_loader.h"
+#include "scene/text_file.h"
 #include "session/prepared_scene.h"
 #include "session/render_stats.h"
 
@@ -111,6 +113,17 @@ void runRender(const RenderOptions &o) {
     double loadMs = loadTimer.elapsedMs();
     // Both backends trace the same camera-relative scene and its grid.
     PreparedScene prepared = prepareScene(std::move(loaded), o.grid, cache ? &*cache : nullptr);
+    // A frame whose spline leaves the keys' range (a camera without a view, a placement out of
+    // float range) fails the run now, before any image is written.
+    for (const FrameJob &job : jobs) {
+        try {
+            cameraAt(prepared.scene, job.frame);
+            for (const PlacementTrack &track : prepared.scene.placementTracks)
+                placementAt(prepared.scene, track, job.frame);
+        } catch (const Error &e) {
+            throw Error(displayPath(o.scenePath) + ": " + e.what());
+        }
+    }
     // Keyed placements: the first frame's instances before the tracer uploads them.
     double firstMoveMs = 0.0;
     moveToFrame(prepared, jobs.front().frame, &firstMoveMs);
