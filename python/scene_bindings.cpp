@@ -1,5 +1,4 @@
 // prism.Scene, prism.Camera and prism.load.
-#include <algorithm>
 #include <array>
 #include <atomic>
 #include <filesystem>
@@ -14,6 +13,7 @@
 #include "cache/disk_cache.h"
 #include "core/timer.h"
 #include "scene/camera_animation.h"
+#include "scene/placement_animation.h"
 #include "scene/scene_loader.h"
 
 namespace py = pybind11;
@@ -151,22 +151,12 @@ void bindScene(py::module_ &m) {
             "place lines) there, docs/scene-format.md.")
         .def_property_readonly(
             "animated",
-            [](const PyScene &s) {
-                return s.prepared->scene.cameraAnimation.animated() ||
-                       placementsAnimated(s.prepared->scene);
-            },
+            [](const PyScene &s) { return sceneAnimated(s.prepared->scene); },
             "Whether the scene's camera or any instance moves (key lines or a turntable).")
         .def_property_readonly(
             "last_frame",
             [](const PyScene &s) {
-                const Scene &scene = s.prepared->scene;
-                const CameraAnimation &a = scene.cameraAnimation;
-                double last = a.keys.empty() ? 1.0 : a.keys.back().frame;
-                if (a.turntable)
-                    last = a.turntable->frames; // frame frames + 1 would be frame 1 again
-                for (const PlacementTrack &track : scene.placementTracks)
-                    last = std::max(last, track.keys.back().frame);
-                return last;
+                return lastAnimatedFrame(s.prepared->scene);
             },
             "The animation's last frame: the later of a turntable's frame count and the last "
             "key's frame (the camera's or a placement's), or 1 for a still scene. Frames run "

@@ -1,5 +1,6 @@
 #include "scene/placement_animation.h"
 
+#include <algorithm>
 #include <string>
 
 #include "core/error.h"
@@ -58,6 +59,16 @@ Instance placementAt(const Scene &scene, const PlacementTrack &track, double fra
     instance.translation -= scene.origin;
     roundToFloat(instance);
     return instance;
+}
+
+double lastAnimatedFrame(const Scene &scene) {
+    const CameraAnimation &a = scene.cameraAnimation;
+    double last = a.keys.empty() ? 1.0 : a.keys.back().frame;
+    if (a.turntable)
+        last = std::max(last, a.turntable->frames);
+    for (const PlacementTrack &track : scene.placementTracks)
+        last = std::max(last, track.keys.back().frame);
+    return last;
 }
 
 std::vector<Instance> instancesAt(const Scene &scene, double frame) {

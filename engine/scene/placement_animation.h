@@ -21,6 +21,15 @@ inline bool placementsAnimated(const Scene &scene) {
 // the scale to 0 or below, or the prototype's box out of the range of 32-bit floats.
 Instance placementAt(const Scene &scene, const PlacementTrack &track, double frame);
 
+// Whether anything moves: the camera (keys, a turntable) or an instance.
+inline bool sceneAnimated(const Scene &scene) {
+    return scene.cameraAnimation.animated() || placementsAnimated(scene);
+}
+
+// The animation's last frame: the later of a turntable's frame count (frame count + 1 is frame
+// 1 again) and the last key's frame, the camera's or a placement's; 1 for a still scene.
+double lastAnimatedFrame(const Scene &scene);
+
 // Every instance at `frame`: Scene::instances with each keyed one at placementAt (whatever frame
 // Scene::instances holds now).
 std::vector<Instance> instancesAt(const Scene &scene, double frame);

@@ -122,6 +122,35 @@ TEST_F(PrismViewXvfb, ScriptedRunWithResizesMatchesPrismRender) {
     EXPECT_TRUE(hasRays) << "the primary ray count covers exactly the 4 accumulated samples";
 }
 
+// --frame shows that frame of the animation: moved instances (moving-instances) and a camera on
+// its turntable (showcase-turntable), each as prism-render --frames draws it.
+TEST_F(PrismViewXvfb, AFrameOfAnAnimationIsPrismRendersFrame) {
+    struct Case {
+        const char *scene, *frame;
+    };
+    for (const Case &c : {Case{"moving-instances", "30"}, Case{"showcase-turntable", "60"}}) {
+        SCOPED_TRACE(c.scene);
+        std::string scene = std::string(PRISM_SCENES_DIR) + "/" + c.scene + ".scene";
+        std::string common = " --size 96x72 --spp 2 --grid regular --validation";
+        fs::path shot = dir_ / (std::string(c.scene) + "-view.exr");
+        fs::path reference = dir_ / (std::string(c.scene) + "-render.exr");
+        CliResult view = run(underXvfb(scene + common + " --frame " + c.frame +
+                                       " --script-frames 4 --screenshot " + shot.string()));
+        ASSERT_EQ(viewExit(view), 0) << view.out;
+        CliResult render = run(std::string(PRISM_RENDER_EXE) + " " + scene + common +
+                               " --quiet --frames " + c.frame + " -o " + reference.string());
+        ASSERT_EQ(render.exitCode, 0) << render.out;
+        CliResult first = run(std::string(PRISM_RENDER_EXE) + " " + scene + common +
+                              " --quiet -o " + (dir_ / "first.exr").string());
+        ASSERT_EQ(first.exitCode, 0) << first.out;
+        prism::LoadedImage a = prism::readImage(shot), b = prism::readImage(reference);
+        ASSERT_EQ(a.pixels.size(), b.pixels.size());
+        EXPECT_LE(largestDifference(a, b), 1e-6);
+        EXPECT_GT(largestDifference(a, prism::readImage(dir_ / "first.exr")), 1e-2)
+            << "the frame differs from frame 1";
+    }
+}
+
 // An edit that breaks the scene shows its FILE:LINE message and keeps the last good scene.
 TEST_F(PrismViewXvfb, BrokenReloadKeepsTheLastGoodScene) {
     fs::path good = write("good.scene", "camera eye 0 0 5 look 0 0 0\nlight 2 2 5\n"

@@ -104,6 +104,8 @@ bool Overlay::build(const OverlayStats &s, FeatureToggles &toggles, bool visible
             ImGui::Text("%ux%u  %s", s.width, s.height, s.presentMode.c_str());
         ImGui::TextUnformatted(s.device.c_str());
         ImGui::TextUnformatted(s.scene.c_str());
+        if (!s.frame.empty())
+            ImGui::Text("%s  ([ and ] step)", s.frame.c_str());
         ImGui::Separator();
         ImGui::Checkbox("shadows", &toggles.shadows);
         ImGui::SameLine();

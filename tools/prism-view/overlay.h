@@ -30,6 +30,7 @@ struct OverlayStats {
     uint32_t width = 0, height = 0; // traced image
     uint32_t traceScale = 1;        // > 1: a moving camera's reduced image
     std::string scene;
+    std::string frame; // "frame 12 of 48" for an animated scene, else empty
     std::string sceneError; // FILE:LINE message of the last failed load, else empty
     uint64_t loopCutPixels = 0;
     std::string notice; // e.g. "saved prism-view-....exr"

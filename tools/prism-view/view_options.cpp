@@ -57,6 +57,11 @@ bool parseViewOptions(int argc, char **argv, ViewOptions &options, ViewScript &s
                    "Fly a fixed camera path for N frames without input (vsync off), print one "
                    "JSON line of frame times and Mrays/s, exit")
         ->check(CLI::Range(1u, 1000000u));
+    app.add_option("--frame", options.frame,
+                   "Show this frame of the scene's animation (its camera keys or turntable, and "
+                   "instances moved by keys); [ and ] step back and forward a frame")
+        ->check(CLI::Range(1.0, 1e9))
+        ->default_val(1);
     app.add_flag("--validation", options.validation,
                  "Enable Vulkan validation layers (also PRISM_VALIDATION=1); any message makes "
                  "the exit status 1");

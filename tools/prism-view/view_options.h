@@ -24,6 +24,7 @@ struct ViewOptions {
     // magnified); when it stops, at full size. 0 = auto: aim for ~20 frames per second.
     uint32_t motionScale = 0;
     uint32_t benchmarkFrames = 0; // > 0: fly the benchmark path, print JSON, exit
+    double frame = 1.0;           // of the scene's animation, at start ([ and ] step it)
     bool validation = false;
     std::string deviceFilter;
     std::string commandLine;

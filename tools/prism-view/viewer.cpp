@@ -11,6 +11,9 @@
 #include "core/error.h"
 #include "core/timer.h"
 #include "render_metadata.h"
+#include "scene/camera_animation.h"
+#include "scene/number_parser.h"
+#include "scene/placement_animation.h"
 #include "scene/scene_origin.h"
 #include "screenshot.h"
 #include "vk/vk_check.h"
@@ -48,12 +51,23 @@ FrameResult minus(const FrameResult &a, const FrameResult &b) {
     return d;
 }
 
+// `centred` at `frame` of its animation: its camera the frame's, its keyed instances moved. The
+// camera line's own camera is then gone from this copy: the next frame starts from the loaded
+// scene again (showScene).
+void setFrame(Scene &centred, double frame) {
+    Camera camera = cameraAt(centred, frame);
+    if (placementsAnimated(centred))
+        centred.instances = instancesAt(centred, frame);
+    centred.camera = camera;
+}
+
 } // namespace
 
 Viewer::Viewer(const ViewOptions &options, ViewDriver &driver)
     : options_(options), driver_(driver),
       window_(options.width, options.height, windowTitle(options.scenePath)),
-      context_(makeContext(options)), source_(options.scenePath), fly_(Camera{}, 1.0f) {
+      context_(makeContext(options)), source_(options.scenePath), frame_(options.frame),
+      fly_(Camera{}, 1.0f) {
     surface_ = window_.createSurface(context_->instance());
     VkExtent2D size = window_.framebufferSize();
     vk::SwapchainOptions swapchainOptions{size, options_.vsync, VK_NULL_HANDLE};
@@ -159,6 +173,7 @@ bool Viewer::setFeatures(const FeatureToggles &features) {
 void Viewer::showScene(Scene loaded, const glm::dvec3 &point) {
     Scene centred = loaded;
     centerOn(centred, point);
+    setFrame(centred, frame_);
     buildTracer(centred); // throws before anything changed
     glm::dvec3 shift = centred.origin - scene_.origin;
     loaded_ = std::move(loaded);
@@ -182,6 +197,26 @@ void Viewer::recenterOnCamera() {
     ++recenterings_;
     std::fprintf(stderr, "prism-view: origin moved to the camera (%u), grid rebuilt in %.1f ms\n",
                  recenterings_, gridBuildMs_);
+}
+
+void Viewer::stepFrame(double delta) {
+    if (!sceneAnimated(loaded_)) {
+        notice_ = "the scene has no animation (docs/scene-format.md, \"Animation\")";
+        return;
+    }
+    double previous = frame_;
+    frame_ = std::max(1.0, frame_ + delta);
+    try {
+        showScene(loaded_, scene_.origin + fly_.camera().eye);
+    } catch (const Error &e) {
+        frame_ = previous;
+        notice_ = e.what();
+        std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
+        return;
+    }
+    if (loaded_.cameraAnimation.animated())
+        fly_.reset(scene_.camera);
+    notice_ = "frame " + formatNumber(frame_);
 }
 
 void Viewer::drainFrames() {
@@ -265,6 +300,12 @@ void Viewer::handleKeys(const std::vector<int> &keys) {
             break;
         case GLFW_KEY_F5:
             reloadScene();
+            break;
+        case GLFW_KEY_LEFT_BRACKET:
+            stepFrame(-1.0);
+            break;
+        case GLFW_KEY_RIGHT_BRACKET:
+            stepFrame(1.0);
             break;
         case GLFW_KEY_F12:
             saveScreenshot(defaultScreenshotBase(options_.scenePath));
@@ -493,6 +534,8 @@ OverlayStats Viewer::overlayStats() const {
     s.height = tracer_->height();
     s.traceScale = traceScale_;
     s.scene = options_.scenePath.filename().string();
+    if (sceneAnimated(loaded_))
+        s.frame = "frame " + formatNumber(frame_) + " of " + formatNumber(lastAnimatedFrame(loaded_));
     s.sceneError = sceneError_;
     s.loopCutPixels = minus(lastCounters_, accumulationBase_).loopCutPixels;
     s.notice = notice_;

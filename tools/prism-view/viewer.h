@@ -52,6 +52,9 @@ private:
     void buildTracer(const Scene &scene);
     bool reloadScene(); // false: the error is shown, the last good scene stays
     void recenterOnCamera();
+    // Shows frame frame_ + delta (not before 1) of the scene's animation; the camera jumps to
+    // that frame's where the animation moves it, else stays where it was flown.
+    void stepFrame(double delta);
     // Centres `loaded` on `point` (in the file's coordinates: scene/scene_origin.h), builds its
     // grid and tracer, and moves the cameras into the new coordinates.
     void showScene(Scene loaded, const glm::dvec3 &point);
@@ -102,7 +105,8 @@ private:
 
     SceneSource source_;
     Scene loaded_; // as the file has it: each centring starts from here (scene_origin.h)
-    Scene scene_;  // centred on where the camera was when last centred
+    Scene scene_;  // centred on where the camera was when last centred, at frame_
+    double frame_ = 1.0; // of the scene's animation: its camera and moving instances
     Grid grid_;
     std::string gridKey_;     // gridCacheKey of grid_: an unchanged key keeps the grid
     bool gridReused_ = false; // the last buildTracer kept grid_ instead of building
