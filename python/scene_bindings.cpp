@@ -138,10 +138,14 @@ void bindScene(py::module_ &m) {
                 // The camera and instances prism-render --frames uses for this frame, to the bit.
                 Camera camera = cameraAt(s.prepared->scene, frame);
                 if (placementsAnimated(s.prepared->scene) && frame != s.prepared->frame) {
-                    py::gil_scoped_release released; // the copy and the build take a while
-                    auto moved = std::make_shared<PreparedScene>(*s.prepared);
-                    moveToFrame(*moved, frame);
-                    s.prepared = std::move(moved);
+                    std::shared_ptr<const PreparedScene> current = s.prepared;
+                    std::shared_ptr<PreparedScene> moved;
+                    {
+                        py::gil_scoped_release released; // the copy and the build take a while
+                        moved = std::make_shared<PreparedScene>(*current);
+                        moveToFrame(*moved, frame);
+                    }
+                    s.prepared = std::move(moved); // with the GIL: other threads read it
                 }
                 s.camera = camera;
                 s.frame = frame;
