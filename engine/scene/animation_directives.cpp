@@ -35,13 +35,13 @@ double finiteNumber(const Token *token) {
     return coordinate(token);
 }
 
-// "the previous key's frame 4 (line 12)", or the frame-1 line's, for time-order errors.
-template <typename Key>
-std::string previousKeyText(const std::vector<Key> &keys, const char *frameOneLine) {
-    if (keys.empty())
+// "the previous key's frame 4 (line 12)", or "frame 1 (the camera line's)" while the line that
+// the keys animate has no key yet.
+std::string previousKeyText(bool noKeyYet, double frame, int line, const char *frameOneLine) {
+    if (noKeyYet)
         return std::string("frame 1 (") + frameOneLine + ")";
-    return "the previous key's frame " + formatNumber(keys.back().frame) + " (line " +
-           std::to_string(keys.back().line) + ")";
+    return "the previous key's frame " + formatNumber(frame) + " (line " + std::to_string(line) +
+           ")";
 }
 
 std::string axesText(const std::vector<MeshRotation> &rotations) {
@@ -65,7 +65,8 @@ void cameraKey(SceneBuilder &builder, const DirectiveArgs &args) {
     double previous = keys.empty() ? 1.0 : keys.back().frame;
     if (!(key.frame > previous))
         throw LineError("key frame " + formatNumber(key.frame) + " must come after " +
-                        previousKeyText(keys, "the camera line's") + ": keys go in time order");
+                        previousKeyText(keys.empty(), previous, keys.empty() ? 0 : keys.back().line,
+                                        "the camera line's") + ": keys go in time order");
     key.camera = keys.empty() ? builder.scene.camera : keys.back().camera;
     if (const KeyedValues *eye = args.find("eye"))
         key.camera.eye = pointAt(eye->values);
@@ -101,10 +102,10 @@ void placeKey(SceneBuilder &builder, const DirectiveArgs &args) {
     PlacementKey key;
     key.frame = finiteNumber(args.positional[0]);
     key.line = builder.line;
-    std::vector<PlacementKey> later(keys.begin() + 1, keys.end());
     if (!(key.frame > keys.back().frame))
         throw LineError("key frame " + formatNumber(key.frame) + " must come after " +
-                        previousKeyText(later, "the place line's") + ": keys go in time order");
+                        previousKeyText(keys.size() == 1, keys.back().frame, keys.back().line,
+                                        "the place line's") + ": keys go in time order");
     MeshTransform given;
     for (const KeyedValues &kv : args.keyed)
         placementValue(kv, given);

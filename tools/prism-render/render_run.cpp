@@ -113,11 +113,12 @@ void runRender(const RenderOptions &o) {
     double loadMs = loadTimer.elapsedMs();
     // Both backends trace the same camera-relative scene and its grid.
     PreparedScene prepared = prepareScene(std::move(loaded), o.grid, cache ? &*cache : nullptr);
-    // A frame whose spline leaves the keys' range (a camera without a view, a placement out of
-    // float range) fails the run now, before any image is written.
+    // Each frame's camera; a frame whose spline leaves the keys' range (a camera without a view,
+    // a placement out of float range) fails the run now, before any image is written.
+    std::vector<Camera> cameras;
     for (const FrameJob &job : jobs) {
         try {
-            cameraAt(prepared.scene, job.frame);
+            cameras.push_back(cameraAt(prepared.scene, job.frame));
             for (const PlacementTrack &track : prepared.scene.placementTracks)
                 placementAt(prepared.scene, track, job.frame);
         } catch (const Error &e) {
@@ -141,7 +142,7 @@ void runRender(const RenderOptions &o) {
         source = std::make_unique<CpuFrameSource>(o, scene);
     } else {
         auto made = std::make_unique<VulkanFrameSource>(o, scene, grid, *context,
-                                                        cameraAt(scene, jobs.front().frame));
+                                                        cameras.front());
         vulkan = made.get();
         source = std::move(made);
     }
@@ -172,7 +173,7 @@ void runRender(const RenderOptions &o) {
         if (i > 0 && moveToFrame(prepared, job.frame))
             source->sceneMoved(scene, grid);
         double frameMoveMs = i > 0 ? moveTimer.elapsedMs() : 0.0;
-        Camera camera = cameraAt(scene, job.frame);
+        const Camera &camera = cameras[i];
         FrameOutcome out = source->render(camera, label, after, progress);
         // The frame's rate by the host's clock: what the user waits, on either backend.
         double frameWallMs = *std::min_element(out.wallMs.begin(), out.wallMs.end());
