@@ -320,7 +320,8 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
         splitter.build(0, cell << int(grid.shift), grid.shift, 0, 0, refs);
     });
     joinFragments(grid, fragments);
-    if (style.expand)
+    grid.expanded = style.expand && expandsCells(options, primitives.count());
+    if (grid.expanded)
         expandCells(grid);
 }
 

@@ -16,7 +16,7 @@ namespace prism {
 
 class DiskCache;
 
-constexpr uint32_t kGridCacheFormat = 1;
+constexpr uint32_t kGridCacheFormat = 2;
 
 // How a grid came to be, for --stats.
 struct GridCacheOutcome {

@@ -67,4 +67,28 @@ GridOptions parseGridOption(std::string_view text) {
     return options;
 }
 
+bool expandsCells(const GridOptions &options, uint64_t finitePrimitives) {
+    switch (options.expansion) {
+    case GridOptions::Expansion::Always:
+        return true;
+    case GridOptions::Expansion::Never:
+        return false;
+    case GridOptions::Expansion::Auto:
+        break;
+    }
+    return options.cameraSamples == 0 ||
+           double(options.cameraSamples) >=
+               kExpansionSamplesPerPrimitive * double(finitePrimitives);
+}
+
+GridOptions::Expansion parseGridExpansion(std::string_view text) {
+    if (text == "auto")
+        return GridOptions::Expansion::Auto;
+    if (text == "always")
+        return GridOptions::Expansion::Always;
+    if (text == "never")
+        return GridOptions::Expansion::Never;
+    throw Error("--grid-expansion " + std::string(text) + ": expected auto, always or never");
+}
+
 } // namespace prism

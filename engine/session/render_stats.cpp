@@ -16,7 +16,8 @@ std::string gridText(const Grid &grid) {
     if (!grid.adaptive())
         return resolutionText(grid.resolution);
     return "adaptive " + resolutionText(grid.resolution) + " top, " +
-           std::to_string(grid.cellCount()) + " cells, depth " + std::to_string(grid.depth);
+           std::to_string(grid.cellCount()) + " cells, depth " + std::to_string(grid.depth) +
+           (grid.expanded ? "" : ", unexpanded");
 }
 
 nlohmann::json sceneStats(const PreparedScene &prepared) {
@@ -37,6 +38,7 @@ nlohmann::json sceneStats(const PreparedScene &prepared) {
          double(grid.cellPrimitives.size()) / double(std::max<uint64_t>(1, grid.cellCount()))},
         {"grid_max_per_cell", grid.maxPerCell},
         {"grid_choice", grid.choice},
+        {"grid_expanded", grid.expanded},
         {"triangles",
          {{"scene", scene.triangles.size()},
           {"prototypes", scene.prototypeTriangleCount()},

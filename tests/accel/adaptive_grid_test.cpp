@@ -208,6 +208,37 @@ TEST(AdaptiveGrid, FollowsAClusterInARoom) {
     EXPECT_LT(g.cellBoxes.size(), 40 * scene.triangles.size()) << "memory stays linear";
 }
 
+// Left unexpanded (GridOptions::expansion), the grid is the expanded one's voxel map and lists
+// with each cell's box as built: the boxes tile the grid, and every cell still lists exactly
+// the primitives that overlap its box. The expansion only grows boxes.
+TEST(AdaptiveGrid, UnexpandedCellsKeepTheirBuiltBoxes) {
+    Scene scene = test::clusterInARoom(48, 600, 40);
+    GridOptions never = parseGridOption("adaptive");
+    never.expansion = GridOptions::Expansion::Never;
+    Grid g = buildGrid(scene, never), expanded = adaptive(scene);
+    expectWellFormed(g);
+    EXPECT_FALSE(g.expanded);
+    EXPECT_TRUE(expanded.expanded);
+    EXPECT_EQ(g.entries, expanded.entries);
+    EXPECT_EQ(g.cellStart, expanded.cellStart);
+    EXPECT_EQ(g.cellPrimitives, expanded.cellPrimitives);
+    std::vector<std::pair<glm::ivec3, glm::ivec3>> built = builtBoxes(g);
+    uint64_t volume = 0;
+    size_t grown = 0;
+    for (uint32_t c = 0; c < g.cellBoxes.size(); ++c) {
+        glm::ivec3 lo, hi;
+        unpackCellBox(g.cellBoxes[c], lo, hi);
+        ASSERT_EQ(lo, built[c].first) << "cell " << c;
+        ASSERT_EQ(hi, built[c].second) << "cell " << c;
+        glm::ivec3 size = hi - lo;
+        volume += uint64_t(size.x) * uint64_t(size.y) * uint64_t(size.z);
+        grown += g.cellBoxes[c] != expanded.cellBoxes[c];
+    }
+    glm::ivec3 res = g.voxelResolution();
+    EXPECT_EQ(volume, uint64_t(res.x) * uint64_t(res.y) * uint64_t(res.z)) << "boxes tile the grid";
+    EXPECT_GT(grown, g.cellBoxes.size() / 4) << "the expanded grid grew many of them";
+}
+
 // Expanded cells take a ray across empty space in few steps: fewer than the cells the voxel
 // map puts along its path (the walk's count without expansion).
 TEST(AdaptiveGrid, ExpandedCellsCrossEmptySpaceInFewSteps) {

@@ -43,6 +43,11 @@ TEST(GridCache, PackedGridsUnpackToTheSameArrays) {
         ASSERT_EQ(built.meshGrids.size(), 1u);
         test::expectSameGrid(unpackGrid(packGrid(built)), built);
     }
+    GridOptions unexpanded{GridOptions::Mode::Adaptive};
+    unexpanded.expansion = GridOptions::Expansion::Never;
+    Grid built = buildGrid(scene, unexpanded);
+    ASSERT_FALSE(built.expanded);
+    test::expectSameGrid(unpackGrid(packGrid(built)), built);
 }
 
 TEST(GridCache, SecondBuildIsReadBackAndEqualsTheFirst) {
@@ -90,6 +95,18 @@ TEST(GridCache, KeyFollowsWhatTheBuildReads) {
     denser.density = 8.0f;
     EXPECT_NE(gridCacheKey(scene, denser),
               gridCacheKey(scene, GridOptions{GridOptions::Mode::Regular}));
+    // The expansion as decided keys the entry, not the samples it was decided by.
+    GridOptions oneImage = adaptive, otherImage = adaptive, never = adaptive;
+    oneImage.cameraSamples = 2; // fewer than 4 a primitive
+    otherImage.cameraSamples = 1;
+    ASSERT_FALSE(expandsCells(oneImage, scene.finitePrimitiveCount()));
+    EXPECT_NE(gridCacheKey(scene, oneImage), base);
+    EXPECT_EQ(gridCacheKey(scene, otherImage), gridCacheKey(scene, oneImage));
+    never.expansion = GridOptions::Expansion::Never;
+    EXPECT_EQ(gridCacheKey(scene, never), gridCacheKey(scene, oneImage));
+    GridOptions manyImages = oneImage;
+    manyImages.cameraSamples = 1u << 30;
+    EXPECT_EQ(gridCacheKey(scene, manyImages), base);
     // Not read by the build: materials and normals; the camera only where auto counts rays.
     EXPECT_EQ(changed([](Scene &s) { s.triangles[7].material = 3; }, adaptive), base);
     EXPECT_EQ(changed([](Scene &s) { s.triangles[7].n[0] = glm::vec3(1, 0, 0); }, adaptive), base);

@@ -51,6 +51,21 @@ TEST_P(AdaptiveGridRender, MatchesTheRegularGrid) {
                 0.01 * double(regular.frame.rays.total()) + 8.0);
 }
 
+// The adaptive grid left unexpanded (a single small image of a big mesh, GridOptions::expansion)
+// walks more cells to the same hits: its image is the expanded grid's.
+TEST_P(AdaptiveGridRender, UnexpandedMatchesExpanded) {
+    Scene scene = loadScene(std::filesystem::path(PRISM_SCENES_DIR) / (GetParam() + ".scene"));
+    const uint32_t width = 64, height = 48, spp = 1, depth = 3;
+    GridOptions never = parseGridOption("adaptive");
+    never.expansion = GridOptions::Expansion::Never;
+    GpuRender expanded =
+        renderGpu(context(), scene, width, height, spp, depth, parseGridOption("adaptive"));
+    GpuRender unexpanded = renderGpu(context(), scene, width, height, spp, depth, never);
+    EXPECT_EQ(unexpanded.frame.loopCutPixels, 0u);
+    expectClose(unexpanded.image.rgba, expanded.image.rgba);
+    EXPECT_EQ(unexpanded.frame.rays.primary, expanded.frame.rays.primary);
+}
+
 INSTANTIATE_TEST_SUITE_P(ShippedScenes, AdaptiveGridRender, ::testing::ValuesIn(shippedScenes()),
                          [](const auto &info) { return testNameOf(info.param); });
 

@@ -54,9 +54,23 @@ std::string gridDigest(const Grid &grid) {
     return text;
 }
 
+// A --grids value: a --grid value, with "+no-expansion" after it for the adaptive grid's cells
+// as built, not grown over their neighbours.
+GridOptions benchGridOptions(const std::string &text) {
+    constexpr std::string_view kNoExpansion = "+no-expansion";
+    std::string_view grid = text;
+    bool noExpansion = grid.ends_with(kNoExpansion);
+    if (noExpansion)
+        grid.remove_suffix(kNoExpansion.size());
+    GridOptions options = parseGridOption(grid);
+    if (noExpansion)
+        options.expansion = GridOptions::Expansion::Never;
+    return options;
+}
+
 Row measureGrid(const Scene &scene, const std::string &name, const std::string &gridText,
                 uint32_t runs) {
-    GridOptions options = parseGridOption(gridText);
+    GridOptions options = benchGridOptions(gridText);
     Row row;
     row.scene = name;
     row.structure = gridText;
@@ -169,7 +183,8 @@ int main(int argc, char **argv) {
     app.add_option("SCENES", scenes, "Scene files")->required()->check(CLI::ExistingFile);
     app.add_option("--grids", gridList,
                    "Comma-separated --grid values to build: auto, regular, adaptive, off, N, "
-                   "NxNyNz")
+                   "NxNyNz; +no-expansion after one (adaptive+no-expansion) leaves the adaptive "
+                   "grid's cells unexpanded")
         ->default_val(gridList);
     app.add_option("--runs", runs, "Builds per grid (the median is reported)")
         ->check(CLI::Range(1u, 1000u))
@@ -184,7 +199,7 @@ int main(int argc, char **argv) {
     if (auto status = parseCommandLine("prism-gridbench", app, argc, argv, [&] {
             std::stringstream list(gridList);
             for (std::string g; std::getline(list, g, ',');)
-                parseGridOption(g); // a bad value is a usage error, before any work
+                benchGridOptions(g); // a bad value is a usage error, before any work
         }))
         return *status;
     ParallelThreads threadLimit(threads);
@@ -192,7 +207,7 @@ int main(int argc, char **argv) {
         std::vector<std::string> grids;
         std::stringstream list(gridList);
         for (std::string g; std::getline(list, g, ',');) {
-            parseGridOption(g); // refuse a bad value before any work
+            benchGridOptions(g); // refuse a bad value before any work
             grids.push_back(g);
         }
         std::vector<Row> rows;

@@ -159,6 +159,15 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
                    "docs/grid-density.md)")
         ->check(CLI::Range(0.01f, 1000.0f))
         ->default_val(density);
+    std::string expansion = "auto";
+    app.add_option("--grid-expansion", expansion,
+                   "Whether the adaptive grid's cells grow over their neighbours, which saves "
+                   "a ray steps and doubles the build: auto (only when the image's camera "
+                   "samples, width x height x spp, reach 4 a primitive: one image of a big mesh "
+                   "is done sooner without; a long range of one may want always), always or "
+                   "never; --stats says which (grid_expanded)")
+        ->check(CLI::IsMember({"auto", "always", "never"}))
+        ->default_val("auto");
     app.add_option("--aov", aov, "Extra EXR channels: z (distance, Z), normal (N.X N.Y N.Z)");
     std::string compression = "zip";
     app.add_option("--exr-compression", compression,
@@ -205,6 +214,7 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
         options.height = parsed.height;
         options.grid = parseGridOption(options.gridText);
         options.grid.density = density;
+        options.grid.expansion = parseGridExpansion(expansion);
         if (!aov.empty())
             parseAovs(aov, options);
         options.backend = backend == "cpu" ? Backend::Cpu : Backend::Vulkan;

@@ -111,8 +111,14 @@ void runRender(const RenderOptions &o) {
     Timer loadTimer;
     Scene loaded = loadScene(o.scenePath);
     double loadMs = loadTimer.elapsedMs();
+    // The camera samples of one whole image decide how much the grid's build does
+    // (GridOptions::expansion): not the tile's or crop's, nor the range's, so that a tile is the
+    // whole image's pixels and a frame the same image alone or in a range, to the bit.
+    GridOptions gridOptions = o.grid;
+    gridOptions.cameraSamples = uint64_t(o.width) * o.height * o.samplesPerPixel;
     // Both backends trace the same camera-relative scene and its grid.
-    PreparedScene prepared = prepareScene(std::move(loaded), o.grid, cache ? &*cache : nullptr);
+    PreparedScene prepared =
+        prepareScene(std::move(loaded), gridOptions, cache ? &*cache : nullptr);
     // Each frame's camera; a frame whose spline leaves the keys' range (a camera without a view,
     // a placement out of float range) fails the run now, before any image is written.
     std::vector<Camera> cameras;
