@@ -320,8 +320,7 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
         splitter.build(0, cell << int(grid.shift), grid.shift, 0, 0, refs);
     });
     joinFragments(grid, fragments);
-    grid.expanded = style.expand && expandsCells(options, primitives.count());
-    if (grid.expanded)
+    if (style.expand && !grid.lean)
         expandCells(grid);
 }
 

@@ -34,28 +34,30 @@ struct GridOptions {
     // Regular (and Auto's regular grid): target cells per primitive (lambda). Measured, see
     // docs/grid-density.md.
     float density = 4.0f;
-    // Whether the adaptive grid's cells grow over their neighbours (accel/cell_expansion.h):
-    // about 1.6x fewer steps a ray, for about twice the build. Auto expands them only where the
-    // camera samples the grid will serve (cameraSamples) reach kExpansionSamplesPerPrimitive a
-    // primitive: below that the trace saves less time than the expansion costs (measured in
-    // docs/benchmarks.md, "Build effort by the image"). cameraSamples 0 means unknown, and many
-    // (a viewer, a Python session): expanded.
-    enum class Expansion { Auto, Always, Never };
-    Expansion expansion = Expansion::Auto;
+    // How much the build does for the rays it will serve (docs/design.md, "Build effort by the
+    // image"). Full: the adaptive grid's cells grown over their neighbours
+    // (accel/cell_expansion.h), and each cell's triangles copied into its list for the tracer
+    // (render/tracer_features.h): fewest steps and loads a ray. Lean: cells as built, lists of
+    // primitive ids: half the build and a third of a big mesh's device memory, each ray 1.1-1.2x
+    // slower at 100k triangles, 1.6-1.7x at 1M. Auto: lean where the camera samples the grid will serve (cameraSamples) are fewer
+    // than kLeanBelowSamplesPerPrimitive a primitive; 0 means unknown, and many (a viewer, a
+    // Python session): full.
+    enum class Effort { Auto, Full, Lean };
+    Effort effort = Effort::Auto;
     uint64_t cameraSamples = 0;
 };
 
-// Camera samples a primitive from which --grid-expansion auto expands the cells. On lavapipe
-// the expansion pays for itself at 12-13 samples a primitive with one shadow ray a sample (a 1M
-// mesh, tori of 100k), at 4-5 where reflections and refractions make 6 rays a sample (the
-// showcase); the lower figure is kept, so that no scene with many rays loses its trace speed.
-constexpr double kExpansionSamplesPerPrimitive = 4.0;
+// Camera samples a primitive under which --grid-build auto builds lean. On lavapipe the full
+// build pays for itself at 12-13 samples a primitive with one shadow ray a sample (a 1M mesh,
+// tori of 100k), at 4-5 where reflections and refractions make 6 rays a sample (the showcase);
+// the lower figure is kept, so that no scene with many rays loses its trace speed.
+constexpr double kLeanBelowSamplesPerPrimitive = 4.0;
 
-// Whether a build with `options` over `finitePrimitives` grid primitives expands its cells.
-bool expandsCells(const GridOptions &options, uint64_t finitePrimitives);
+// Whether a build with `options` over `finitePrimitives` grid primitives is lean.
+bool buildsLean(const GridOptions &options, uint64_t finitePrimitives);
 
-// Parses --grid-expansion's argument: auto, always or never.
-GridOptions::Expansion parseGridExpansion(std::string_view text);
+// Parses --grid-build's argument: auto, full or lean.
+GridOptions::Effort parseGridBuild(std::string_view text);
 
 // Parses --grid's argument: "auto", "regular", "off", "adaptive", "two-level", "N" (N^3) or
 // "NxNyNz", each count in 1..1024.
@@ -88,7 +90,9 @@ struct Grid {
     std::vector<uint32_t> entries;
     std::vector<glm::uvec4> cellBoxes;
     uint32_t depth = 0; // the deepest leaf's level below the top (a lookup's iterations)
-    bool expanded = false; // cellBoxes grown over their neighbours (GridOptions::expansion)
+    // Built lean (GridOptions::effort): adaptive cells left as built, not expanded, and the
+    // tracer reads the cells' primitive ids rather than copies of their triangles.
+    bool lean = false;
 
     uint32_t maxPerCell = 0; // the fullest cell's count, for --stats and the benchmarks
     std::string choice;      // Auto only: which grid it chose, and the counts it chose by

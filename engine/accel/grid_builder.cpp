@@ -87,6 +87,7 @@ Grid buildOneGrid(const Scene &scene, const GridOptions &options) {
             grid.boundsMax[a] = std::nextafter(grid.boundsMax[a], INFINITY);
     }
     uint32_t primitives = finite.count();
+    grid.lean = buildsLean(options, primitives);
     switch (options.mode) {
     case GridOptions::Mode::Off:
         grid.resolution = glm::ivec3(1);

@@ -40,7 +40,7 @@ void packInto(BlobWriter &out, const Grid &g) {
     out.values(g.entries);
     out.values(g.cellBoxes);
     out.value(g.depth);
-    out.value(uint8_t(g.expanded));
+    out.value(uint8_t(g.lean));
     out.value(g.maxPerCell);
     out.text(g.choice);
     out.value(uint64_t(g.meshGrids.size()));
@@ -62,7 +62,7 @@ Grid unpackFrom(BlobReader &in, int level) {
     g.entries = in.values<uint32_t>();
     g.cellBoxes = in.values<glm::uvec4>();
     g.depth = in.value<uint32_t>();
-    g.expanded = in.value<uint8_t>() != 0;
+    g.lean = in.value<uint8_t>() != 0;
     g.maxPerCell = in.value<uint32_t>();
     g.choice = in.text();
     uint64_t meshes = in.value<uint64_t>();
@@ -83,9 +83,9 @@ std::string gridCacheKey(const Scene &scene, const GridOptions &options) {
     ContentHash hash;
     hash.text("prism grid").text(PRISM_GRID_SOURCE_DIGEST).value(kGridCacheFormat);
     hash.value(int32_t(options.mode)).value(options.resolution).value(options.density);
-    // The expansion as decided, not the samples it was decided by: every image size that
-    // decides alike shares the entry.
-    hash.value(uint8_t(expandsCells(options, scene.finitePrimitiveCount())));
+    // The effort as decided, not the samples it was decided by: every image size that decides
+    // alike shares the entry.
+    hash.value(uint8_t(buildsLean(options, scene.finitePrimitiveCount())));
     hash.value(uint64_t(scene.spheres.size()));
     for (const Sphere &s : scene.spheres)
         hash.value(s.center).value(s.radius);

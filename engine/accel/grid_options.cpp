@@ -67,28 +67,28 @@ GridOptions parseGridOption(std::string_view text) {
     return options;
 }
 
-bool expandsCells(const GridOptions &options, uint64_t finitePrimitives) {
-    switch (options.expansion) {
-    case GridOptions::Expansion::Always:
-        return true;
-    case GridOptions::Expansion::Never:
+bool buildsLean(const GridOptions &options, uint64_t finitePrimitives) {
+    switch (options.effort) {
+    case GridOptions::Effort::Full:
         return false;
-    case GridOptions::Expansion::Auto:
+    case GridOptions::Effort::Lean:
+        return true;
+    case GridOptions::Effort::Auto:
         break;
     }
-    return options.cameraSamples == 0 ||
-           double(options.cameraSamples) >=
-               kExpansionSamplesPerPrimitive * double(finitePrimitives);
+    return options.cameraSamples > 0 &&
+           double(options.cameraSamples) <
+               kLeanBelowSamplesPerPrimitive * double(finitePrimitives);
 }
 
-GridOptions::Expansion parseGridExpansion(std::string_view text) {
+GridOptions::Effort parseGridBuild(std::string_view text) {
     if (text == "auto")
-        return GridOptions::Expansion::Auto;
-    if (text == "always")
-        return GridOptions::Expansion::Always;
-    if (text == "never")
-        return GridOptions::Expansion::Never;
-    throw Error("--grid-expansion " + std::string(text) + ": expected auto, always or never");
+        return GridOptions::Effort::Auto;
+    if (text == "full")
+        return GridOptions::Effort::Full;
+    if (text == "lean")
+        return GridOptions::Effort::Lean;
+    throw Error("--grid-build " + std::string(text) + ": expected auto, full or lean");
 }
 
 } // namespace prism

@@ -65,7 +65,7 @@ TracerFeatures chooseFeatures(const Scene &scene, const Grid &grid, const Tracer
     f.mollerTrumbore = options.mollerTrumbore;
     uint32_t finiteKinds = f.kinds & ~(1u << gpu::kKindPlane);
     uint64_t entries = grid.cellPrimitives.size();
-    bool cells = options.cellPrimitives && f.texelBuffers;
+    bool cells = options.cellPrimitives && f.texelBuffers && !grid.lean;
     // On an adaptive grid the rows hold the cell records, which the voxel map's leaves name by
     // 28 bits (render/scene_packing.h).
     uint64_t rows = cellTriangleRows(grid, true);

@@ -13,11 +13,11 @@ std::string resolutionText(const glm::ivec3 &r) {
 } // namespace
 
 std::string gridText(const Grid &grid) {
+    const char *lean = grid.lean ? ", lean" : "";
     if (!grid.adaptive())
-        return resolutionText(grid.resolution);
+        return resolutionText(grid.resolution) + lean;
     return "adaptive " + resolutionText(grid.resolution) + " top, " +
-           std::to_string(grid.cellCount()) + " cells, depth " + std::to_string(grid.depth) +
-           (grid.expanded ? "" : ", unexpanded");
+           std::to_string(grid.cellCount()) + " cells, depth " + std::to_string(grid.depth) + lean;
 }
 
 nlohmann::json sceneStats(const PreparedScene &prepared) {
@@ -38,7 +38,7 @@ nlohmann::json sceneStats(const PreparedScene &prepared) {
          double(grid.cellPrimitives.size()) / double(std::max<uint64_t>(1, grid.cellCount()))},
         {"grid_max_per_cell", grid.maxPerCell},
         {"grid_choice", grid.choice},
-        {"grid_expanded", grid.expanded},
+        {"grid_build", grid.lean ? "lean" : "full"},
         {"triangles",
          {{"scene", scene.triangles.size()},
           {"prototypes", scene.prototypeTriangleCount()},

@@ -208,17 +208,17 @@ TEST(AdaptiveGrid, FollowsAClusterInARoom) {
     EXPECT_LT(g.cellBoxes.size(), 40 * scene.triangles.size()) << "memory stays linear";
 }
 
-// Left unexpanded (GridOptions::expansion), the grid is the expanded one's voxel map and lists
+// Built lean (GridOptions::effort), the adaptive grid is the full one's voxel map and lists
 // with each cell's box as built: the boxes tile the grid, and every cell still lists exactly
 // the primitives that overlap its box. The expansion only grows boxes.
-TEST(AdaptiveGrid, UnexpandedCellsKeepTheirBuiltBoxes) {
+TEST(AdaptiveGrid, LeanCellsKeepTheirBuiltBoxes) {
     Scene scene = test::clusterInARoom(48, 600, 40);
-    GridOptions never = parseGridOption("adaptive");
-    never.expansion = GridOptions::Expansion::Never;
-    Grid g = buildGrid(scene, never), expanded = adaptive(scene);
+    GridOptions lean = parseGridOption("adaptive");
+    lean.effort = GridOptions::Effort::Lean;
+    Grid g = buildGrid(scene, lean), expanded = adaptive(scene);
     expectWellFormed(g);
-    EXPECT_FALSE(g.expanded);
-    EXPECT_TRUE(expanded.expanded);
+    EXPECT_TRUE(g.lean);
+    EXPECT_FALSE(expanded.lean);
     EXPECT_EQ(g.entries, expanded.entries);
     EXPECT_EQ(g.cellStart, expanded.cellStart);
     EXPECT_EQ(g.cellPrimitives, expanded.cellPrimitives);

@@ -43,10 +43,10 @@ TEST(GridCache, PackedGridsUnpackToTheSameArrays) {
         ASSERT_EQ(built.meshGrids.size(), 1u);
         test::expectSameGrid(unpackGrid(packGrid(built)), built);
     }
-    GridOptions unexpanded{GridOptions::Mode::Adaptive};
-    unexpanded.expansion = GridOptions::Expansion::Never;
-    Grid built = buildGrid(scene, unexpanded);
-    ASSERT_FALSE(built.expanded);
+    GridOptions lean{GridOptions::Mode::Adaptive};
+    lean.effort = GridOptions::Effort::Lean;
+    Grid built = buildGrid(scene, lean);
+    ASSERT_TRUE(built.lean);
     test::expectSameGrid(unpackGrid(packGrid(built)), built);
 }
 
@@ -95,15 +95,15 @@ TEST(GridCache, KeyFollowsWhatTheBuildReads) {
     denser.density = 8.0f;
     EXPECT_NE(gridCacheKey(scene, denser),
               gridCacheKey(scene, GridOptions{GridOptions::Mode::Regular}));
-    // The expansion as decided keys the entry, not the samples it was decided by.
-    GridOptions oneImage = adaptive, otherImage = adaptive, never = adaptive;
+    // The effort as decided keys the entry, not the samples it was decided by.
+    GridOptions oneImage = adaptive, otherImage = adaptive, lean = adaptive;
     oneImage.cameraSamples = 2; // fewer than 4 a primitive
     otherImage.cameraSamples = 1;
-    ASSERT_FALSE(expandsCells(oneImage, scene.finitePrimitiveCount()));
+    ASSERT_TRUE(buildsLean(oneImage, scene.finitePrimitiveCount()));
     EXPECT_NE(gridCacheKey(scene, oneImage), base);
     EXPECT_EQ(gridCacheKey(scene, otherImage), gridCacheKey(scene, oneImage));
-    never.expansion = GridOptions::Expansion::Never;
-    EXPECT_EQ(gridCacheKey(scene, never), gridCacheKey(scene, oneImage));
+    lean.effort = GridOptions::Effort::Lean;
+    EXPECT_EQ(gridCacheKey(scene, lean), gridCacheKey(scene, oneImage));
     GridOptions manyImages = oneImage;
     manyImages.cameraSamples = 1u << 30;
     EXPECT_EQ(gridCacheKey(scene, manyImages), base);

@@ -36,38 +36,39 @@ TEST(GridOptions, RejectsBadText) {
     }
 }
 
-TEST(GridOptions, ExpansionSpellings) {
-    EXPECT_EQ(parseGridExpansion("auto"), GridOptions::Expansion::Auto);
-    EXPECT_EQ(parseGridExpansion("always"), GridOptions::Expansion::Always);
-    EXPECT_EQ(parseGridExpansion("never"), GridOptions::Expansion::Never);
-    for (const char *bad : {"", "Auto", "yes", "always "}) {
+TEST(GridOptions, BuildSpellings) {
+    EXPECT_EQ(parseGridBuild("auto"), GridOptions::Effort::Auto);
+    EXPECT_EQ(parseGridBuild("full"), GridOptions::Effort::Full);
+    EXPECT_EQ(parseGridBuild("lean"), GridOptions::Effort::Lean);
+    for (const char *bad : {"", "Auto", "fast", "lean "}) {
         SCOPED_TRACE(bad);
-        EXPECT_THROW(parseGridExpansion(bad), Error);
+        EXPECT_THROW(parseGridBuild(bad), Error);
     }
 }
 
-// auto expands where the camera samples reach kExpansionSamplesPerPrimitive a primitive, and
-// where they are unknown (0: a viewer, a Python session); always and never do as they say.
-TEST(GridOptions, ExpansionFollowsTheSamplesAPrimitive) {
+// auto builds lean where the camera samples are under kLeanBelowSamplesPerPrimitive a primitive,
+// and full where they reach it or are unknown (0: a viewer, a Python session); full and lean do
+// as they say.
+TEST(GridOptions, BuildEffortFollowsTheSamplesAPrimitive) {
     GridOptions o;
-    EXPECT_EQ(o.expansion, GridOptions::Expansion::Auto);
-    EXPECT_TRUE(expandsCells(o, 1'000'000)) << "unknown samples: expanded";
+    EXPECT_EQ(o.effort, GridOptions::Effort::Auto);
+    EXPECT_FALSE(buildsLean(o, 1'000'000)) << "unknown samples: full";
     const uint64_t primitives = 1'000'000;
-    const auto threshold = uint64_t(kExpansionSamplesPerPrimitive * double(primitives));
+    const auto threshold = uint64_t(kLeanBelowSamplesPerPrimitive * double(primitives));
     o.cameraSamples = 512 * 384; // one image of a 1M-triangle mesh
-    EXPECT_FALSE(expandsCells(o, primitives));
+    EXPECT_TRUE(buildsLean(o, primitives));
     o.cameraSamples = threshold - 1;
-    EXPECT_FALSE(expandsCells(o, primitives));
+    EXPECT_TRUE(buildsLean(o, primitives));
     o.cameraSamples = threshold;
-    EXPECT_TRUE(expandsCells(o, primitives));
+    EXPECT_FALSE(buildsLean(o, primitives));
     o.cameraSamples = 1024 * 768; // the same image of a small scene
-    EXPECT_TRUE(expandsCells(o, 12'184));
+    EXPECT_FALSE(buildsLean(o, 12'184));
     o.cameraSamples = 1;
-    o.expansion = GridOptions::Expansion::Always;
-    EXPECT_TRUE(expandsCells(o, primitives));
+    o.effort = GridOptions::Effort::Full;
+    EXPECT_FALSE(buildsLean(o, primitives));
     o.cameraSamples = 0;
-    o.expansion = GridOptions::Expansion::Never;
-    EXPECT_FALSE(expandsCells(o, 10));
+    o.effort = GridOptions::Effort::Lean;
+    EXPECT_TRUE(buildsLean(o, 10));
 }
 
 } // namespace

@@ -130,7 +130,7 @@ inline void expectSameGrid(const Grid &a, const Grid &b) {
     EXPECT_EQ(a.entries, b.entries);
     EXPECT_EQ(a.cellBoxes, b.cellBoxes);
     EXPECT_EQ(a.depth, b.depth);
-    EXPECT_EQ(a.expanded, b.expanded);
+    EXPECT_EQ(a.lean, b.lean);
     EXPECT_EQ(a.maxPerCell, b.maxPerCell);
     EXPECT_EQ(a.choice, b.choice);
     ASSERT_EQ(a.meshGrids.size(), b.meshGrids.size());

@@ -194,16 +194,16 @@ def test_last_stats_has_the_names_and_figures_of_prism_render_stats(renderer, tm
     scene = prism.load(str(SCENES / "showcase.scene"))
     renderer.render(scene, 64, 48, spp=2, depth=3)
     stats = renderer.last_stats
-    # A loaded scene serves any number of renders, so its adaptive grid is expanded, as the
-    # CLI's is for images with 4 samples a primitive (a 64x48 image of the showcase has fewer).
+    # A loaded scene serves any number of renders, so its grid is built in full, as the CLI's
+    # is for images with 4 samples a primitive (a 64x48 image of the showcase has fewer).
     line = subprocess.run([RENDER, str(SCENES / "showcase.scene"), "-o", str(tmp_path / "s.exr"),
                            "--quiet", "--stats", "--size", "64x48", "--spp", "2", "--depth", "3",
-                           "--grid-expansion", "always"],
+                           "--grid-build", "full"],
                           check=True, capture_output=True, text=True).stdout
     cli = json.loads(line)
     assert set(cli) - COMMAND_ONLY <= set(stats), set(cli) - COMMAND_ONLY - set(stats)
     for key in ("width", "height", "region", "spp", "depth", "seed", "rays", "tiles",
-                "primitives", "grid", "grid_cells", "grid_choice", "grid_expanded", "triangles",
+                "primitives", "grid", "grid_cells", "grid_choice", "grid_build", "triangles",
                 "scene_gpu_bytes", "backend", "device"):
         assert stats[key] == cli[key], key
     assert stats["scene"].endswith("showcase.scene")

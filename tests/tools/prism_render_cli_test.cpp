@@ -90,7 +90,7 @@ TEST_F(PrismRenderCli, BadOptionsFailClearly) {
     std::string base = scene.string() + " -o " + (dir() / "out.png").string();
     for (const char *bad : {" --size 8by8", " --grid 0", " --grid 2x2", " --spp 0",
                             " --backend metal", " --aov depth", " --grid-density 0",
-                            " --grid-expansion sometimes"}) {
+                            " --grid-build fast"}) {
         CliResult r = run(base + bad);
         EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.out; // a usage error
         EXPECT_EQ(r.out.rfind("prism-render: error: ", 0), 0u) << bad << ": " << r.out;
@@ -149,28 +149,31 @@ TEST_F(PrismRenderCli, GridFromTheCacheRendersTheSameImage) {
     EXPECT_NE(both.out.find("--no-cache"), std::string::npos) << both.out;
 }
 
-// --grid-expansion auto expands the adaptive grid's cells only where the image's camera samples
-// reach 4 a primitive (accel/grid.h): the bunny's 4,968 triangles need 19,872. One whole
-// image's samples decide, not a tile's or a range's (so that tiles and frames stay the whole
-// image's, to the bit); always and never override.
-TEST_F(PrismRenderCli, GridExpansionFollowsTheImage) {
+// --grid-build auto builds lean where the image's camera samples are under 4 a primitive
+// (accel/grid.h): the bunny's 4,968 triangles need 19,872 for the full build. One whole image's
+// samples decide, not a tile's or a range's (so that tiles and frames stay the whole image's, to
+// the bit); full and lean override. Lean: cells unexpanded, and no cell triangle copies on the
+// device.
+TEST_F(PrismRenderCli, GridBuildFollowsTheImage) {
     std::string base = std::string(PRISM_SCENES_DIR) + "/bunny.scene --depth 1 --grid adaptive " +
                        "--no-cache --stats --quiet -o ";
-    auto expanded = [&](const std::string &args, const std::string &out) {
+    auto lean = [&](const std::string &args, const std::string &out) {
         CliResult r = run(base + (dir() / out).string() + args);
         EXPECT_EQ(r.exitCode, 0) << r.out;
         nlohmann::json stats = nlohmann::json::parse(r.stdoutOnly);
-        bool value = stats["grid_expanded"].get<bool>();
-        EXPECT_EQ(stats["grid"].get<std::string>().find("unexpanded") == std::string::npos, value);
+        bool value = stats["grid_build"].get<std::string>() == "lean";
+        EXPECT_EQ(stats["grid"].get<std::string>().ends_with(", lean"), value);
+        uint64_t copies = stats["scene_gpu_bytes"]["grid cell triangle"].get<uint64_t>();
+        EXPECT_EQ(copies <= 16u, value) << "cell triangle bytes " << copies;
         return value;
     };
-    EXPECT_FALSE(expanded(" --size 48x36", "small.png")) << "1,728 samples";
-    EXPECT_TRUE(expanded(" --size 160x128", "large.png")) << "20,480 samples";
-    EXPECT_TRUE(expanded(" --size 160x128 --tile 0/4", "t{tile}.exr"))
+    EXPECT_TRUE(lean(" --size 48x36", "small.png")) << "1,728 samples";
+    EXPECT_FALSE(lean(" --size 160x128", "large.png")) << "20,480 samples";
+    EXPECT_FALSE(lean(" --size 160x128 --tile 0/4", "t{tile}.exr"))
         << "a quarter of the image: the whole image decides";
-    EXPECT_FALSE(expanded(" --size 48x36 --frames 1-12", "f####.png")) << "per frame: 1,728";
-    EXPECT_TRUE(expanded(" --size 48x36 --grid-expansion always", "always.png"));
-    EXPECT_FALSE(expanded(" --size 160x128 --grid-expansion never", "never.png"));
+    EXPECT_TRUE(lean(" --size 48x36 --frames 1-12", "f####.png")) << "per frame: 1,728";
+    EXPECT_FALSE(lean(" --size 48x36 --grid-build full", "full.png"));
+    EXPECT_TRUE(lean(" --size 160x128 --grid-build lean", "lean.png"));
 }
 
 // Issue 10's memory figure: a thousand placements of one bunny hold its 4,968 triangles once and

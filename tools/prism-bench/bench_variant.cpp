@@ -48,8 +48,8 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.grid.density = density;
         } else if (token.rfind("density=", 0) == 0) {
             v.grid.density = parsePositive(text, token.substr(8), "density");
-        } else if (token == "no-expansion") {
-            v.grid.expansion = GridOptions::Expansion::Never;
+        } else if (token == "lean") {
+            v.grid.effort = GridOptions::Effort::Lean;
         } else if (token == "no-reflection") {
             v.tracer.reflection = false;
         } else if (token == "no-refraction") {
@@ -83,7 +83,7 @@ BenchVariant parseBenchVariant(const std::string &text) {
         } else {
             throw Error("variant " + text + ": unknown part '" + token +
                         "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
-                        "no-expansion, no-reflection, no-refraction, no-shadows, no-cull, no-plane-tiles, "
+                        "lean, no-reflection, no-refraction, no-shadows, no-cull, no-plane-tiles, "
                         "no-tile-starts, start-boxes=N, bit-reversed-rows, "
                         "no-cell-primitives, texel, "
                         "storage, "

@@ -188,8 +188,8 @@ int main(int argc, char **argv) {
     app.add_option(
            "--variants", variantList,
            "Comma-separated variants: auto, regular, off, adaptive, two-level, grid=N|NxNyNz, "
-           "density=L, no-expansion (the adaptive grid's cells not grown over their neighbours, "
-           "as prism-render builds them for a single image of a big mesh), "
+           "density=L, lean (the grid built as prism-render builds it for one image of a big "
+           "mesh: adaptive cells not expanded, cells listing primitive ids), "
            "no-reflection, no-refraction, no-shadows, no-cull (the full tracer on every tile, "
            "also those whose camera rays miss everything), no-plane-tiles (the grid in tiles "
            "that see only planes too), no-tile-starts (camera rays walk the grid from its entry, "

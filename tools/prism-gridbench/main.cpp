@@ -54,17 +54,17 @@ std::string gridDigest(const Grid &grid) {
     return text;
 }
 
-// A --grids value: a --grid value, with "+no-expansion" after it for the adaptive grid's cells
-// as built, not grown over their neighbours.
+// A --grids value: a --grid value, with "+lean" after it for the lean build (GridOptions::effort:
+// the adaptive grid's cells not expanded).
 GridOptions benchGridOptions(const std::string &text) {
-    constexpr std::string_view kNoExpansion = "+no-expansion";
+    constexpr std::string_view kLean = "+lean";
     std::string_view grid = text;
-    bool noExpansion = grid.ends_with(kNoExpansion);
-    if (noExpansion)
-        grid.remove_suffix(kNoExpansion.size());
+    bool lean = grid.ends_with(kLean);
+    if (lean)
+        grid.remove_suffix(kLean.size());
     GridOptions options = parseGridOption(grid);
-    if (noExpansion)
-        options.expansion = GridOptions::Expansion::Never;
+    if (lean)
+        options.effort = GridOptions::Effort::Lean;
     return options;
 }
 
@@ -183,8 +183,8 @@ int main(int argc, char **argv) {
     app.add_option("SCENES", scenes, "Scene files")->required()->check(CLI::ExistingFile);
     app.add_option("--grids", gridList,
                    "Comma-separated --grid values to build: auto, regular, adaptive, off, N, "
-                   "NxNyNz; +no-expansion after one (adaptive+no-expansion) leaves the adaptive "
-                   "grid's cells unexpanded")
+                   "NxNyNz; +lean after one (adaptive+lean) builds it lean, as prism-render "
+                   "does for one image of a big mesh: the adaptive grid's cells unexpanded")
         ->default_val(gridList);
     app.add_option("--runs", runs, "Builds per grid (the median is reported)")
         ->check(CLI::Range(1u, 1000u))

@@ -112,7 +112,7 @@ void runRender(const RenderOptions &o) {
     Scene loaded = loadScene(o.scenePath);
     double loadMs = loadTimer.elapsedMs();
     // The camera samples of one whole image decide how much the grid's build does
-    // (GridOptions::expansion): not the tile's or crop's, nor the range's, so that a tile is the
+    // (GridOptions::effort): not the tile's or crop's, nor the range's, so that a tile is the
     // whole image's pixels and a frame the same image alone or in a range, to the bit.
     GridOptions gridOptions = o.grid;
     gridOptions.cameraSamples = uint64_t(o.width) * o.height * o.samplesPerPixel;
