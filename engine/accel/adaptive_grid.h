@@ -29,9 +29,9 @@ struct AdaptiveStyle {
 };
 constexpr AdaptiveStyle kTwoLevelStyle{1, false, false, false};
 
-// Fills grid.shift, entries, cellBoxes (expanded unless grid.lean: accel/cell_expansion.h), cellStart,
-// cellPrimitives, depth and maxPerCell; the grid's bounds, top resolution and cell size are
-// already set. Cells split to about options.density cells per primitive they hold. Throws
+// Fills grid.shift, entries, cellBoxes (expanded unless grid.lean: accel/cell_expansion.h),
+// cellStart, cellPrimitives, depth and maxPerCell; the grid's bounds, top resolution and cell size
+// are already set. Cells split to about options.density cells per primitive they hold. Throws
 // prism::Error when the grid would need more than 2^28 cells or entries.
 void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const GridOptions &options,
                         const AdaptiveStyle &style = {});

@@ -39,9 +39,9 @@ struct GridOptions {
     // (accel/cell_expansion.h), and each cell's triangles copied into its list for the tracer
     // (render/tracer_features.h): fewest steps and loads a ray. Lean: cells as built, lists of
     // primitive ids: half the build and a third of a big mesh's device memory, each ray 1.1-1.2x
-    // slower at 100k triangles, 1.6-1.7x at 1M. Auto: lean where the camera samples the grid will serve (cameraSamples) are fewer
-    // than kLeanBelowSamplesPerPrimitive a primitive; 0 means unknown, and many (a viewer, a
-    // Python session): full.
+    // slower at 100k triangles, 1.6-1.7x at 1M. Auto: lean where the camera samples the grid will
+    // serve (cameraSamples) are fewer than kLeanBelowSamplesPerPrimitive a primitive; 0 means
+    // unknown, and many (a viewer, a Python session): full.
     enum class Effort { Auto, Full, Lean };
     Effort effort = Effort::Auto;
     uint64_t cameraSamples = 0;
@@ -125,6 +125,12 @@ struct Grid {
 };
 
 Grid buildGrid(const Scene &scene, const GridOptions &options = {});
+
+// buildGrid with the prototypes' mesh grids taken from `meshGrids` (a grid built before for the
+// same prototypes: accel/grid_cache.h, meshGridsKey) instead of built again: only the level the
+// spheres, triangles and instances are in is built (a viewer's reload that moved instances).
+Grid buildGridOverMeshGrids(const Scene &scene, const GridOptions &options,
+                            const std::vector<Grid> &meshGrids);
 
 // The grid of `scene` whose instances have moved since `previous` was built for it (a keyed
 // placement's next frame): the level the instances are in built again, the prototypes' mesh

@@ -151,7 +151,14 @@ std::vector<Grid> buildMeshGrids(const Scene &scene) {
 } // namespace
 
 Grid buildGrid(const Scene &scene, const GridOptions &options) {
-    std::vector<Grid> meshGrids = buildMeshGrids(scene);
+    return buildGridOverMeshGrids(scene, options, buildMeshGrids(scene));
+}
+
+Grid buildGridOverMeshGrids(const Scene &scene, const GridOptions &options,
+                            const std::vector<Grid> &meshGrids) {
+    if (meshGrids.size() != scene.prototypes.size())
+        throw Error("mesh grids for " + std::to_string(meshGrids.size()) + " prototypes, not " +
+                    std::to_string(scene.prototypes.size()));
     auto build = [&](GridOptions::Mode mode) {
         GridOptions one = options;
         one.mode = mode;

@@ -107,6 +107,15 @@ std::string gridCacheKey(const Scene &scene, const GridOptions &options) {
     return hash.hex();
 }
 
+std::string meshGridsKey(const Scene &scene) {
+    ContentHash hash;
+    hash.text("prism mesh grids").text(PRISM_GRID_SOURCE_DIGEST).value(kGridCacheFormat);
+    hash.value(uint64_t(scene.prototypes.size()));
+    for (const MeshPrototype &prototype : scene.prototypes)
+        addTrianglePositions(hash, prototype.triangles);
+    return hash.hex();
+}
+
 std::string packGrid(const Grid &grid) {
     BlobWriter out;
     out.reserve(size_t(grid.bytes()) + 4096);

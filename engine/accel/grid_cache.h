@@ -16,6 +16,10 @@ namespace prism {
 
 class DiskCache;
 
+// A digest of what the prototypes' mesh grids are built from (their triangles' positions, and
+// the builder's code): equal keys, the same mesh grids (Grid::meshGrids).
+std::string meshGridsKey(const Scene &scene);
+
 constexpr uint32_t kGridCacheFormat = 2;
 
 // How a grid came to be, for --stats.

@@ -77,8 +77,7 @@ bool buildsLean(const GridOptions &options, uint64_t finitePrimitives) {
         break;
     }
     return options.cameraSamples > 0 &&
-           double(options.cameraSamples) <
-               kLeanBelowSamplesPerPrimitive * double(finitePrimitives);
+           double(options.cameraSamples) < kLeanBelowSamplesPerPrimitive * double(finitePrimitives);
 }
 
 GridOptions::Effort parseGridBuild(std::string_view text) {

@@ -29,27 +29,26 @@ nlohmann::json sceneStats(const PreparedScene &prepared) {
     for (const Instance &i : scene.instances)
         placedTriangles += scene.prototypes[i.prototype].triangles.size();
     const GridCacheOutcome &cache = prepared.gridCache;
-    return {
-        {"primitives", scene.finitePrimitiveCount() + scene.planes.size()},
-        {"grid", gridText(grid)},
-        {"grid_cells", grid.cellCount()},
-        {"grid_bytes", grid.bytes()},
-        {"grid_mean_per_cell",
-         double(grid.cellPrimitives.size()) / double(std::max<uint64_t>(1, grid.cellCount()))},
-        {"grid_max_per_cell", grid.maxPerCell},
-        {"grid_choice", grid.choice},
-        {"grid_build", grid.lean ? "lean" : "full"},
-        {"triangles",
-         {{"scene", scene.triangles.size()},
-          {"prototypes", scene.prototypeTriangleCount()},
-          {"instances", scene.instances.size()},
-          {"placed", placedTriangles}}},
-        {"build_ms", prepared.buildMs},
-        {"grid_cache",
-         {{"state", cache.state},
-          {"key_ms", cache.keyMs},
-          {"read_ms", cache.readMs},
-          {"store_ms", cache.storeMs}}}};
+    return {{"primitives", scene.finitePrimitiveCount() + scene.planes.size()},
+            {"grid", gridText(grid)},
+            {"grid_cells", grid.cellCount()},
+            {"grid_bytes", grid.bytes()},
+            {"grid_mean_per_cell",
+             double(grid.cellPrimitives.size()) / double(std::max<uint64_t>(1, grid.cellCount()))},
+            {"grid_max_per_cell", grid.maxPerCell},
+            {"grid_choice", grid.choice},
+            {"grid_build", grid.lean ? "lean" : "full"},
+            {"triangles",
+             {{"scene", scene.triangles.size()},
+              {"prototypes", scene.prototypeTriangleCount()},
+              {"instances", scene.instances.size()},
+              {"placed", placedTriangles}}},
+            {"build_ms", prepared.buildMs},
+            {"grid_cache",
+             {{"state", cache.state},
+              {"key_ms", cache.keyMs},
+              {"read_ms", cache.readMs},
+              {"store_ms", cache.storeMs}}}};
 }
 
 nlohmann::json frameStats(const RayCounts &rays, double traceMs, uint32_t resumeDispatches) {

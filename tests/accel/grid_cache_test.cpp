@@ -116,6 +116,33 @@ TEST(GridCache, KeyFollowsWhatTheBuildReads) {
               gridCacheKey(scene, autoGrid));
 }
 
+// The mesh grids' key follows the prototypes' positions alone, so a viewer's reload that moves
+// instances (or the origin) keeps them; a grid built over kept mesh grids is the grid built anew.
+TEST(GridCache, MeshGridsKeyAndGridOverKeptMeshGrids) {
+    Scene scene = sceneWithInstances();
+    const std::string key = meshGridsKey(scene);
+    Scene moved = scene;
+    moved.instances[1].translation.x += 2.0;
+    moved.spheres[0].center.y += 1.0f;
+    moved.instances[0].material = 2;
+    EXPECT_EQ(meshGridsKey(moved), key);
+    Scene edited = scene;
+    edited.prototypes[0].triangles[3].p[2].y += 1e-9;
+    EXPECT_NE(meshGridsKey(edited), key);
+    edited = scene;
+    edited.prototypes.push_back(edited.prototypes[0]);
+    EXPECT_NE(meshGridsKey(edited), key);
+
+    for (GridOptions::Mode mode :
+         {GridOptions::Mode::Auto, GridOptions::Mode::Adaptive, GridOptions::Mode::Regular}) {
+        SCOPED_TRACE(int(mode));
+        Grid first = buildGrid(scene, GridOptions{mode});
+        test::expectSameGrid(buildGridOverMeshGrids(moved, GridOptions{mode}, first.meshGrids),
+                             buildGrid(moved, GridOptions{mode}));
+    }
+    EXPECT_THROW(buildGridOverMeshGrids(scene, GridOptions{}, {}), Error);
+}
+
 // An entry whose bytes pass the checksum but do not make a grid (a writer's bug, or a
 // format change without a new version) is removed and the grid built anew.
 TEST(GridCache, AnEntryThatIsNoGridIsRebuilt) {

@@ -88,9 +88,9 @@ TEST_F(PrismRenderCli, BadOutputPathFailsBeforeAnyWork) {
 TEST_F(PrismRenderCli, BadOptionsFailClearly) {
     fs::path scene = write("ok.scene", "sphere 0 0 0 1\n");
     std::string base = scene.string() + " -o " + (dir() / "out.png").string();
-    for (const char *bad : {" --size 8by8", " --grid 0", " --grid 2x2", " --spp 0",
-                            " --backend metal", " --aov depth", " --grid-density 0",
-                            " --grid-build fast"}) {
+    for (const char *bad :
+         {" --size 8by8", " --grid 0", " --grid 2x2", " --spp 0", " --backend metal",
+          " --aov depth", " --grid-density 0", " --grid-build fast"}) {
         CliResult r = run(base + bad);
         EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.out; // a usage error
         EXPECT_EQ(r.out.rfind("prism-render: error: ", 0), 0u) << bad << ": " << r.out;

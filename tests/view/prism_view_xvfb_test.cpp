@@ -205,6 +205,58 @@ TEST_F(PrismViewXvfb, MaterialEditReloadKeepsTheGrid) {
     EXPECT_EQ(move.out.find("grid kept"), std::string::npos) << "geometry moved: built anew";
 }
 
+// A reload that only moves an instance keeps the prototypes' mesh grids and builds the level the
+// instances are in alone (issue 31), and shows the moved scene exactly as prism-render does.
+TEST_F(PrismViewXvfb, InstanceMoveReloadKeepsTheMeshGrids) {
+    std::string bunny =
+        (fs::path(PRISM_SCENES_DIR) / ".." / "models" / "bunny" / "bunny_lowres.obj").string();
+    auto scene = [&](const std::string &x) {
+        return "camera eye 0 1.5 7 look 0 0.8 0\nlight 2 4 5\n"
+               "material cream color 0.88 0.82 0.7 specular 0.4\n"
+               "mesh " +
+               bunny +
+               " cream scale 13 translate 0.22 -0.433 0.04 smooth as bunny\n"
+               "place bunny translate -1.2 0 0\nplace bunny translate " +
+               x + " 0 0\n";
+    };
+    write("two.scene", scene("1.2"));
+    fs::path moved = write("moved.scene", scene("0.6"));
+    fs::path shot = dir_ / "view.exr", reference = dir_ / "render.exr";
+    CliResult view = run(
+        underXvfb((dir_ / "two.scene").string() +
+                  " --size 64x48 --spp 2 --script-frames 6 --script-reload 3:" + moved.string() +
+                  " --screenshot " + shot.string() + " --validation"));
+    ASSERT_EQ(viewExit(view), 0) << view.out;
+    EXPECT_NE(view.out.find("reloaded moved.scene (same meshes: their grids kept)"),
+              std::string::npos)
+        << view.out;
+    CliResult render = run(std::string(PRISM_RENDER_EXE) + " " + moved.string() +
+                           " --size 64x48 --spp 2 --quiet --no-cache -o " + reference.string());
+    ASSERT_EQ(render.exitCode, 0) << render.out;
+    prism::LoadedImage a = prism::readImage(shot), b = prism::readImage(reference);
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    EXPECT_LE(largestDifference(a, b), 1e-6) << "the moved bunny, over the kept mesh grid";
+
+    // A changed prototype (its scale) is a new mesh: its grid is built anew, not kept.
+    std::string rescaledText = scene("0.6");
+    rescaledText.replace(rescaledText.find("scale 13"), 8, "scale 10");
+    fs::path rescaled = write("rescaled.scene", rescaledText);
+    CliResult second = run(
+        underXvfb((dir_ / "two.scene").string() +
+                  " --size 64x48 --spp 2 --script-frames 6 --script-reload 3:" + rescaled.string() +
+                  " --screenshot " + shot.string() + " --validation"));
+    ASSERT_EQ(viewExit(second), 0) << second.out;
+    EXPECT_NE(second.out.find("reloaded rescaled.scene"), std::string::npos) << second.out;
+    EXPECT_EQ(second.out.find("grids kept"), std::string::npos) << "a new mesh: built anew";
+    render = run(std::string(PRISM_RENDER_EXE) + " " + rescaled.string() +
+                 " --size 64x48 --spp 2 --quiet --no-cache -o " + reference.string());
+    ASSERT_EQ(render.exitCode, 0) << render.out;
+    a = prism::readImage(shot);
+    b = prism::readImage(reference);
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    EXPECT_LE(largestDifference(a, b), 1e-6) << "the smaller bunny, over its own mesh grid";
+}
+
 // Far from the origin the viewer shows what it shows at the origin: the scene is centred on the
 // camera when loaded, and a jump of 1000 view distances and back re-centres twice (a grid
 // rebuild each). The whole image is compared with the unit scene's prism-render: at most 0.1%

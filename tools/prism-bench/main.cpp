@@ -231,7 +231,8 @@ int main(int argc, char **argv) {
     app.add_option("--device", deviceFilter, "First Vulkan device whose name contains this");
     bool validation = false;
     bool quiet = false;
-    app.add_flag("--quiet", quiet, "No progress on stderr (a rewritten line on a terminal, a line a step in a log)");
+    app.add_flag("--quiet", quiet,
+                 "No progress on stderr (a rewritten line on a terminal, a line a step in a log)");
     app.add_flag("--validation", validation,
                  "Enable Vulkan validation layers (also PRISM_VALIDATION=1); any message fails "
                  "the run. Timings under validation are not comparable with others");

@@ -113,10 +113,11 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
                    "frame's file")
         ->required();
     std::string frames;
-    CLI::Option *framesOption = app.add_option("--frames", frames,
-                   "Render these frames of the scene's animation in one process (the scene "
-                   "loaded, its grid built and the tracer compiled once): N, A-B, A-B:STEP or a "
-                   "comma-separated list of them, e.g. 1-240 or 1,5,10-20");
+    CLI::Option *framesOption = app.add_option(
+        "--frames", frames,
+        "Render these frames of the scene's animation in one process (the scene "
+        "loaded, its grid built and the tracer compiled once): N, A-B, A-B:STEP or a "
+        "comma-separated list of them, e.g. 1-240 or 1,5,10-20");
     app.add_flag("--skip-existing", options.skipExisting,
                  "Leave out frames whose output file exists (images are written whole or not at "
                  "all, so an existing file is a finished frame): resumes a stopped range");
@@ -160,14 +161,15 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
         ->check(CLI::Range(0.01f, 1000.0f))
         ->default_val(density);
     std::string build = "auto";
-    app.add_option("--grid-build", build,
-                   "How much the grid's build does for the rays: full (adaptive cells grown over "
-                   "their neighbours, cells holding copies of their triangles: fastest rays), "
-                   "lean (half the build and a third of a big mesh's memory, rays up to 1.7x "
-                   "slower at 1M triangles) or auto: lean where the whole image's camera samples (width x "
-                   "height x spp) are under 4 a primitive, so that one image of a big mesh is "
-                   "done sooner (a long range of frames of one may want full); --stats says "
-                   "which (grid_build)")
+    app.add_option(
+           "--grid-build", build,
+           "How much the grid's build does for the rays: full (adaptive cells grown over "
+           "their neighbours, cells holding copies of their triangles: fastest rays), "
+           "lean (half the build and a third of a big mesh's memory, rays up to 1.7x "
+           "slower at 1M triangles) or auto: lean where the whole image's camera samples (width x "
+           "height x spp) are under 4 a primitive, so that one image of a big mesh is "
+           "done sooner (a long range of frames of one may want full); --stats says "
+           "which (grid_build)")
         ->check(CLI::IsMember({"auto", "full", "lean"}))
         ->default_val("auto");
     app.add_option("--aov", aov, "Extra EXR channels: z (distance, Z), normal (N.X N.Y N.Z)");

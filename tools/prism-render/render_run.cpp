@@ -75,7 +75,6 @@ std::vector<FrameJob> frameJobs(const RenderOptions &o, size_t &skipped) {
     return jobs;
 }
 
-
 // What each frame of a range cost (--stats "per_frame").
 struct FrameRecord {
     int frame = 0;
@@ -147,8 +146,7 @@ void runRender(const RenderOptions &o) {
     if (o.backend == Backend::Cpu) {
         source = std::make_unique<CpuFrameSource>(o, scene);
     } else {
-        auto made = std::make_unique<VulkanFrameSource>(o, scene, grid, *context,
-                                                        cameras.front());
+        auto made = std::make_unique<VulkanFrameSource>(o, scene, grid, *context, cameras.front());
         vulkan = made.get();
         source = std::move(made);
     }
@@ -170,10 +168,10 @@ void runRender(const RenderOptions &o) {
             label += " (" + std::to_string(job.frame) + ")";
         std::string after; // the frames so far say how long the rest takes
         if (i > 0)
-            after = ", " +
-                    durationText(rangeTimer.elapsedMs() / 1e3 / double(i) *
-                                 double(jobs.size() - i)) +
-                    " left";
+            after =
+                ", " +
+                durationText(rangeTimer.elapsedMs() / 1e3 / double(i) * double(jobs.size() - i)) +
+                " left";
         // Moving instances: the grid's instance level again, the arrays uploaded again.
         Timer moveTimer;
         if (i > 0 && moveToFrame(prepared, job.frame))
@@ -240,16 +238,13 @@ void runRender(const RenderOptions &o) {
     double processMs = process.elapsedMs();
     std::vector<double> writeMs = writer.writeMs();
     if (range && !o.quiet)
-        std::fprintf(stderr,
-                     "prism-render: %zu frame%s in %s (%.0f ms a frame after the first)%s\n",
-                     jobs.size(), jobs.size() == 1 ? "" : "s",
-                     durationText(processMs / 1e3).c_str(),
-                     jobs.size() > 1 ? (rangeTimer.elapsedMs() + writeWaitMs - frames[0].frameMs) /
-                                           double(jobs.size() - 1)
-                                     : frames[0].frameMs,
-                     skipped > 0 ? (", " + std::to_string(skipped) + " skipped: they exist")
-                                       .c_str()
-                                 : "");
+        std::fprintf(
+            stderr, "prism-render: %zu frame%s in %s (%.0f ms a frame after the first)%s\n",
+            jobs.size(), jobs.size() == 1 ? "" : "s", durationText(processMs / 1e3).c_str(),
+            jobs.size() > 1 ? (rangeTimer.elapsedMs() + writeWaitMs - frames[0].frameMs) /
+                                  double(jobs.size() - 1)
+                            : frames[0].frameMs,
+            skipped > 0 ? (", " + std::to_string(skipped) + " skipped: they exist").c_str() : "");
 
     if (o.stats) {
         double bestMs = *std::min_element(allFrameMs.begin(), allFrameMs.end());
@@ -275,8 +270,7 @@ void runRender(const RenderOptions &o) {
             {"wall_ms_median", median(allWallMs)},
             {"frames", allFrameMs.size()},
             {"pipeline_cache",
-             {{"loaded_bytes", pipelineCacheLoaded},
-              {"saved_bytes", pipelineCacheSaved}}}};
+             {{"loaded_bytes", pipelineCacheLoaded}, {"saved_bytes", pipelineCacheSaved}}}};
         stats.update(sceneStats(prepared));
         stats.update(frameStats(last.rays, bestMs, last.resumeDispatches));
         if (vulkan) {

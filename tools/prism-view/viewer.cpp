@@ -103,17 +103,25 @@ void Viewer::buildTracer(const Scene &scene) {
     else if (gridOptions.mode == GridOptions::Mode::Off)
         gridOptions.mode = GridOptions::Mode::Auto; // --grid off, then switched on
     // A reload that changed no geometry (a material, a light, a texture) or a toggle other than
-    // the grid's keeps the grid: its key is what the build reads (accel/grid_cache.h).
+    // the grid's keeps the grid: its key is what the build reads (accel/grid_cache.h). One that
+    // left the prototypes as they were (instances moved, or the origin: prototypes keep their
+    // own space) builds only the instances' level over the mesh grids it has.
     std::string gridKey = gridCacheKey(scene, gridOptions);
-    bool reuse = tracer_ && gridKey == gridKey_;
+    std::string meshKey = scene.prototypes.empty() ? std::string() : meshGridsKey(scene);
+    GridWork work = !tracer_                                  ? GridWork::Built
+                    : gridKey == gridKey_                     ? GridWork::Kept
+                    : !meshKey.empty() && meshKey == meshKey_ ? GridWork::SceneLevel
+                                                              : GridWork::Built;
     std::optional<Grid> built;
     double buildMs = gridBuildMs_;
-    if (!reuse) {
+    if (work != GridWork::Kept) {
         Timer buildTimer;
-        built = buildGrid(scene, gridOptions);
+        built = work == GridWork::SceneLevel
+                    ? buildGridOverMeshGrids(scene, gridOptions, grid_.meshGrids)
+                    : buildGrid(scene, gridOptions);
         buildMs = buildTimer.elapsedMs();
     }
-    const Grid &grid = reuse ? grid_ : *built;
+    const Grid &grid = work == GridWork::Kept ? grid_ : *built;
     TracerOptions tracerOptions;
     tracerOptions.maxDepth = options_.maxDepth;
     tracerOptions.shadows = toggles_.shadows;
@@ -129,7 +137,8 @@ void Viewer::buildTracer(const Scene &scene) {
     if (built)
         grid_ = std::move(*built);
     gridKey_ = std::move(gridKey);
-    gridReused_ = reuse;
+    meshKey_ = std::move(meshKey);
+    gridWork_ = work;
     gridBuildMs_ = buildMs;
     present_->setSource(tracer_->accumulation());
     resetCounters_ = true;
@@ -144,7 +153,9 @@ bool Viewer::reloadScene() {
         showScene(source_.load(), scene_.origin + fly_.camera().eye);
         sceneError_.clear();
         notice_ = "reloaded " + source_.path().filename().string() +
-                  (gridReused_ ? " (same geometry: grid kept)" : "");
+                  (gridWork_ == GridWork::Kept         ? " (same geometry: grid kept)"
+                   : gridWork_ == GridWork::SceneLevel ? " (same meshes: their grids kept)"
+                                                       : "");
         std::fprintf(stderr, "prism-view: %s\n", notice_.c_str());
         return true;
     } catch (const Error &e) {
@@ -535,7 +546,8 @@ OverlayStats Viewer::overlayStats() const {
     s.traceScale = traceScale_;
     s.scene = options_.scenePath.filename().string();
     if (sceneAnimated(loaded_))
-        s.frame = "frame " + formatNumber(frame_) + " of " + formatNumber(lastAnimatedFrame(loaded_));
+        s.frame =
+            "frame " + formatNumber(frame_) + " of " + formatNumber(lastAnimatedFrame(loaded_));
     s.sceneError = sceneError_;
     s.loopCutPixels = minus(lastCounters_, accumulationBase_).loopCutPixels;
     s.notice = notice_;

@@ -104,12 +104,17 @@ private:
     std::unique_ptr<Overlay> overlay_;
 
     SceneSource source_;
-    Scene loaded_; // as the file has it: each centring starts from here (scene_origin.h)
-    Scene scene_;  // centred on where the camera was when last centred, at frame_
+    Scene loaded_;       // as the file has it: each centring starts from here (scene_origin.h)
+    Scene scene_;        // centred on where the camera was when last centred, at frame_
     double frame_ = 1.0; // of the scene's animation: its camera and moving instances
     Grid grid_;
-    std::string gridKey_;     // gridCacheKey of grid_: an unchanged key keeps the grid
-    bool gridReused_ = false; // the last buildTracer kept grid_ instead of building
+    std::string gridKey_; // gridCacheKey of grid_: an unchanged key keeps the grid
+    std::string meshKey_; // meshGridsKey of grid_'s prototypes ("" without any)
+    // What the last buildTracer did with the grid: kept grid_ (the geometry's key unchanged),
+    // built only the level the instances are in over grid_'s mesh grids (the prototypes
+    // unchanged: instances moved, the origin moved), or built all of it.
+    enum class GridWork { Built, SceneLevel, Kept };
+    GridWork gridWork_ = GridWork::Built;
     double gridBuildMs_ = 0.0;
     uint32_t recenterings_ = 0; // the fly camera went far from the origin (scene_origin.h)
     FeatureToggles toggles_;
