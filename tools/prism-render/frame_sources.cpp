@@ -44,7 +44,14 @@ ContextInBackground::ContextInBackground(const RenderOptions &o, const DiskCache
     options.validation = o.validation;
     options.deviceNameFilter = o.deviceFilter;
     options.pipelineStore = pipelineStore;
-    made_ = std::async(std::launch::async, [options] {
+    auto ended = std::make_shared<std::promise<void>>();
+    ended_ = ended->get_future().share();
+    made_ = std::async(std::launch::async, [options, ended] {
+        // Set however the making ends, so that no waiter waits for ever.
+        struct Signal {
+            std::promise<void> &ended;
+            ~Signal() { ended.set_value(); }
+        } signal{*ended};
         Timer timer;
         auto context = std::make_unique<vk::Context>(options);
         return std::pair{std::move(context), timer.elapsedMs()};
@@ -88,20 +95,19 @@ FrameOutcome VulkanFrameSource::render(const Camera &camera, const std::string &
     // Timing several frames (--runs) also gets a warm-up frame, so that they are alike
     // (caches, clocks); a single render does not pay a second frame for that.
     for (uint32_t frame = o_.repeat > 1 ? 0 : 1; frame <= o_.repeat; ++frame) {
-        std::string text = frame == 0 ? label + " warm-up"
-                           : o_.repeat > 1
-                               ? label + " timing " + std::to_string(frame) + "/" +
-                                     std::to_string(o_.repeat)
-                               : label;
+        std::string text = frame == 0      ? label + " warm-up"
+                           : o_.repeat > 1 ? label + " timing " + std::to_string(frame) + "/" +
+                                                 std::to_string(o_.repeat)
+                                           : label;
         Timer frameTimer; // the rate so far: the shader's ray counts over the frame's time
         auto report = [&](double f) {
             double ms = frameTimer.elapsedMs();
             double rate = ms > 0.0 ? double(tracer_->raysCounted()) / (ms * 1e3) : 0.0;
             progress.update(text, f, after, rate);
         };
-        FrameResult result = tracer_->renderFrame(camera, frame == 0 ? 1u : o_.samplesPerPixel,
-                                                  report,
-                                                  frame == o_.repeat); // the image read back below
+        FrameResult result =
+            tracer_->renderFrame(camera, frame == 0 ? 1u : o_.samplesPerPixel, report,
+                                 frame == o_.repeat); // the image read back below
         // renderFrame traces a frame that overran lavapipe's loop limit again, resumably.
         out.resumeDispatches = result.resumeDispatches;
         out.tiles = result.tiles;
@@ -122,10 +128,10 @@ FrameOutcome VulkanFrameSource::render(const Camera &camera, const std::string &
     out.image.height = int(traced.height);
     out.image.rgba = std::move(traced.rgba);
     if (o_.showTiles)
-        tintTilesByClass(out.image.rgba, wholeImage(traced.fullWidth, traced.fullHeight),
-                         PixelRect{traced.x0, traced.y0, traced.x0 + traced.width,
-                                   traced.y0 + traced.height},
-                         tracer_->lastTileClasses());
+        tintTilesByClass(
+            out.image.rgba, wholeImage(traced.fullWidth, traced.fullHeight),
+            PixelRect{traced.x0, traced.y0, traced.x0 + traced.width, traced.y0 + traced.height},
+            tracer_->lastTileClasses());
     if (o_.aovDepth)
         out.image.depth = std::move(traced.depth);
     if (o_.aovNormal)
@@ -151,7 +157,8 @@ FrameOutcome CpuFrameSource::render(const Camera &camera, const std::string &lab
                                                std::to_string(o_.repeat)
                                          : label;
         Timer timer;
-        rendered = renderReference(scene_, settings, [&](double f) { progress.update(text, f, after); });
+        rendered =
+            renderReference(scene_, settings, [&](double f) { progress.update(text, f, after); });
         out.frameMs.push_back(timer.elapsedMs());
         out.wallMs.push_back(out.frameMs.back());
     }

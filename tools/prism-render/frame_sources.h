@@ -34,10 +34,10 @@ struct VulkanPhases {
 // One frame as traced: the image and its timings.
 struct FrameOutcome {
     OutputImage image;
-    std::vector<double> frameMs;   // timed frames only (after warm-up): GPU timestamps
-    std::vector<double> wallMs;    // the same frames by the host's clock (FrameResult)
-    RayCounts rays;                // of one frame
-    uint32_t resumeDispatches = 0; // of the last frame, when traced resumably
+    std::vector<double> frameMs;     // timed frames only (after warm-up): GPU timestamps
+    std::vector<double> wallMs;      // the same frames by the host's clock (FrameResult)
+    RayCounts rays;                  // of one frame
+    uint32_t resumeDispatches = 0;   // of the last frame, when traced resumably
     std::array<uint32_t, 3> tiles{}; // of the last frame: FrameResult::tiles
     double framesMs = 0.0;           // every frame on the host's clock, waits included
     double readbackMs = 0.0;         // accumulation (and AOVs) copied back and divided
@@ -51,8 +51,11 @@ public:
     ContextInBackground(const RenderOptions &o, const DiskCache *pipelineStore);
     // The context (rethrowing what its creation threw), and how long the caller waited for it.
     vk::Context &get(double &waitedMs, double &madeMs);
+    // Returns once the context is made or has failed; from any thread.
+    void waitUntilMade() const { ended_.wait(); }
 
 private:
+    std::shared_future<void> ended_;
     std::future<std::pair<std::unique_ptr<vk::Context>, double>> made_;
     std::unique_ptr<vk::Context> context_;
 };

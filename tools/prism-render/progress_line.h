@@ -1,8 +1,8 @@
 #pragma once
 // "prism-render: frame 1/3 42%, 3.9 Mrays/s, 12s left, 9.1s elapsed" on stderr, shown only once
-// work has taken over a second so that short renders stay silent. On a terminal the line is rewritten in
-// place; where stderr is a file or a pipe (a farm's log) only the last state is written, once,
-// at the end, so that logs do not fill with carriage returns.
+// work has taken over a second so that short renders stay silent. On a terminal the line is
+// rewritten in place; where stderr is a file or a pipe (a farm's log) only the last state is
+// written, once, at the end, so that logs do not fill with carriage returns.
 #include <cstdio>
 #include <string>
 

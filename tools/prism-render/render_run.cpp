@@ -98,8 +98,6 @@ void runRender(const RenderOptions &o) {
     }
     for (const FrameJob &job : jobs) // a bad -o fails now, not after the render
         checkCanStage(job.output);
-    // OpenImageIO loads while the scene loads and the device starts (joined on return).
-    std::jthread imageFiles([] { preloadImageFiles(); });
     // Built grids and the device's pipeline cache are kept here between runs.
     std::optional<DiskCache> cache;
     if (!o.noCache && !o.cacheDir.empty())
@@ -107,6 +105,15 @@ void runRender(const RenderOptions &o) {
     std::optional<ContextInBackground> context;
     if (o.backend == Backend::Vulkan)
         context.emplace(o, cache ? &*cache : nullptr);
+    // OpenImageIO loads on a thread of its own (joined on return) once the device has started:
+    // the dynamic loader takes one lock for a library's whole load, so its ~260 libraries loaded
+    // beside the driver's would hold the device back; after it, they load while the scene loads
+    // or builds and the tracer's pipelines compile.
+    std::jthread imageFiles([&context] {
+        if (context)
+            context->waitUntilMade();
+        preloadImageFiles();
+    });
     Timer loadTimer;
     Scene loaded = loadScene(o.scenePath);
     double loadMs = loadTimer.elapsedMs();
