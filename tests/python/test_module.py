@@ -53,6 +53,26 @@ def test_the_module_renders_what_prism_render_renders(renderer, tmp_path):
         assert np.array_equal(images["n"][:, :, k], cli[channel]), channel
 
 
+def test_a_lean_build_renders_what_prism_render_lean_renders(renderer, tmp_path):
+    scene = prism.load(str(SCENES / "bunny.scene"), build="lean", cache=False)
+    images = renderer.render(scene, 64, 48, depth=2, aovs=("rgb", "z"))
+    assert renderer.last_stats["grid_build"] == "lean"
+    assert renderer.last_stats["scene_gpu_bytes"]["grid cell triangle"] <= 16, "ids, no copies"
+    cli = render_cli(tmp_path, SCENES / "bunny.scene", "--size", "64x48", "--depth", "2",
+                     "--aov", "z", "--grid-build", "lean")
+    for k, channel in enumerate("RGB"):
+        assert np.array_equal(images["rgb"][:, :, k], cli[channel]), channel
+    assert np.array_equal(images["z"][:, :, 0], cli["Z"])
+    full = prism.load(str(SCENES / "bunny.scene"), cache=False)
+    renderer.render(full, 16, 12)
+    assert renderer.last_stats["grid_build"] == "full"
+    for bad in ("auto", "fast", ""):
+        with pytest.raises(ValueError):
+            prism.load(str(SCENES / "bunny.scene"), build=bad)
+        with pytest.raises(ValueError):
+            prism.Scene.from_string("sphere 0 0 0 1\n", build=bad)
+
+
 def test_a_frame_set_from_python_is_prism_render_frame(renderer, tmp_path):
     scene = prism.load(str(SCENES / "showcase-turntable.scene"))
     assert scene.animated
