@@ -108,7 +108,8 @@ void runRender(const RenderOptions &o) {
     // OpenImageIO loads on a thread of its own (joined on return) once the device has started:
     // the dynamic loader takes one lock for a library's whole load, so its ~260 libraries loaded
     // beside the driver's would hold the device back; after it, they load while the scene loads
-    // or builds and the tracer's pipelines compile.
+    // or builds and the tracer's pipelines compile. Declared after `context`: joined before it
+    // goes.
     std::jthread imageFiles([&context] {
         if (context)
             context->waitUntilMade();

@@ -107,9 +107,14 @@ void Viewer::buildTracer(const Scene &scene) {
     // left the prototypes as they were (instances moved, or the origin: prototypes keep their
     // own space) builds only the instances' level over the mesh grids it has.
     std::string gridKey = gridCacheKey(scene, gridOptions);
-    std::string meshKey = scene.prototypes.empty() ? std::string() : meshGridsKey(scene);
+    bool same = tracer_ && gridKey == gridKey_;
+    // Only a changed grid asks after the meshes: their digest reads every prototype triangle
+    // again, and a kept grid's meshes are the ones it has.
+    std::string meshKey = same                       ? meshKey_
+                          : scene.prototypes.empty() ? std::string()
+                                                     : meshGridsKey(scene);
     GridWork work = !tracer_                                  ? GridWork::Built
-                    : gridKey == gridKey_                     ? GridWork::Kept
+                    : same                                    ? GridWork::Kept
                     : !meshKey.empty() && meshKey == meshKey_ ? GridWork::SceneLevel
                                                               : GridWork::Built;
     std::optional<Grid> built;
