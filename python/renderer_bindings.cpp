@@ -1,5 +1,6 @@
 // prism.Renderer: the Vulkan device, and the tracer of the last scene and settings rendered.
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -32,6 +33,38 @@ struct TracerKey {
     bool operator==(const TracerKey &) const = default;
 };
 
+// A JSON value as the Python object json.loads would make of its text, built directly (the text
+// and its parse cost a loop of small renders 0.1 ms a read of last_stats).
+py::object toPython(const nlohmann::json &value) {
+    switch (value.type()) {
+    case nlohmann::json::value_t::object: {
+        py::dict dict;
+        for (const auto &[key, item] : value.items())
+            dict[py::str(key)] = toPython(item);
+        return dict;
+    }
+    case nlohmann::json::value_t::array: {
+        py::list list;
+        for (const nlohmann::json &item : value)
+            list.append(toPython(item));
+        return list;
+    }
+    case nlohmann::json::value_t::string:
+        return py::str(value.get_ref<const std::string &>());
+    case nlohmann::json::value_t::boolean:
+        return py::bool_(value.get<bool>());
+    case nlohmann::json::value_t::number_integer:
+        return py::int_(value.get<int64_t>());
+    case nlohmann::json::value_t::number_unsigned:
+        return py::int_(value.get<uint64_t>());
+    case nlohmann::json::value_t::number_float: // not finite: null in the text, so None
+        return std::isfinite(value.get<double>()) ? py::object(py::float_(value.get<double>()))
+                                                  : py::object(py::none());
+    default:
+        return py::none();
+    }
+}
+
 class PyRenderer {
 public:
     PyRenderer(const std::optional<std::string> &device, bool validation) {
@@ -63,7 +96,23 @@ public:
                 throw py::value_error("aovs are 'rgb', 'z' and 'n', got '" + a + "'");
             wanted = true;
         }
-        TracedImage image;
+        // The arrays first, while this thread holds the GIL: the readback writes straight into
+        // them (one pass over the pixels, no copy of a TracedImage).
+        Timer arrays;
+        py::dict out;
+        ReadbackTargets targets;
+        auto array = [&](const char *name, size_t channels) {
+            py::array_t<float> a({size_t(height), size_t(width), channels});
+            out[name] = a;
+            return static_cast<float *>(a.mutable_data());
+        };
+        if (rgb)
+            targets.rgb = array("rgb", 3);
+        if (z)
+            targets.depth = array("z", 1);
+        if (n)
+            targets.normal = array("n", 3);
+        double arraysMs = arrays.elapsedMs();
         FrameResult frame;
         double tracerMs = 0.0, readbackMs = 0.0;
         std::vector<ArrayBytes> sceneArrays;
@@ -79,9 +128,9 @@ public:
                 TracerOptions options;
                 options.maxDepth = depth;
                 options.writeAov = key.aov;
-                tracer_ = std::make_unique<RayTracer>(*context_, scene->prepared->scene,
-                                                      scene->prepared->grid, width, height,
-                                                      options);
+                tracer_ =
+                    std::make_unique<RayTracer>(*context_, scene->prepared->scene,
+                                                scene->prepared->grid, width, height, options);
                 tracerMs = made.elapsedMs();
                 key_ = key;
                 keptScene_ = scene->prepared; // the tracer's scene stays alive with it
@@ -95,7 +144,7 @@ public:
             tracer_->setSeed(seed);
             frame = tracer_->renderFrame(camera, spp, {}, true); // copied out in its submission
             Timer readback;
-            image = tracer_->readback(spp);
+            tracer_->readbackInto(spp, targets);
             readbackMs = readback.elapsedMs();
             sceneArrays = tracer_->sceneArrayBytes();
         }
@@ -103,53 +152,31 @@ public:
             throw std::runtime_error(
                 std::to_string(context_->validationMessageCount() - messagesBefore) +
                 " Vulkan validation messages (printed on stderr) during this render");
-        Timer arrays;
-        py::dict out;
-        size_t pixels = size_t(width) * height;
-        auto array = [&](size_t channels, auto fill) {
-            py::array_t<float> a({size_t(height), size_t(width), channels});
-            fill(static_cast<float *>(a.mutable_data()));
-            return a;
-        };
-        if (rgb)
-            out["rgb"] = array(3, [&](float *to) {
-                for (size_t i = 0; i < pixels; ++i)
-                    std::memcpy(to + 3 * i, &image.rgba[4 * i], 3 * sizeof(float));
-            });
-        if (z)
-            out["z"] = array(1, [&](float *to) {
-                std::copy(image.depth.begin(), image.depth.end(), to);
-            });
-        if (n)
-            out["n"] = array(3, [&](float *to) {
-                std::copy(image.normal.begin(), image.normal.end(), to);
-            });
-        double arraysMs = arrays.elapsedMs();
         // The names of prism-render --stats (session/render_stats.h), less what only a
         // command's run has (walk counts, writes, the process's phases).
-        nlohmann::json stats = {{"scene", scene->path},
-                                {"backend", "vulkan"},
-                                {"device", context_->deviceName()},
-                                {"width", width},
-                                {"height", height},
-                                {"region", "0," + std::to_string(width) + ",0," +
-                                               std::to_string(height)},
-                                {"spp", spp},
-                                {"depth", depth},
-                                {"seed", seed},
-                                {"load_ms", scene->loadMs},
-                                {"trace_ms", frame.gpuMs},
-                                {"trace_ms_median", frame.gpuMs},
-                                {"wall_ms", frame.wallMs},
-                                {"wall_ms_median", frame.wallMs},
-                                {"frames", 1},
-                                {"tiles", tileStats(frame.tiles)},
-                                {"scene_gpu_bytes", gpuBytesStats(sceneArrays)},
-                                {"phases_ms",
-                                 {{"tracer", tracerMs}, // 0: kept from the last render
-                                  {"frames", frame.wallMs},
-                                  {"readback", readbackMs},
-                                  {"arrays", arraysMs}}}};
+        nlohmann::json stats = {
+            {"scene", scene->path},
+            {"backend", "vulkan"},
+            {"device", context_->deviceName()},
+            {"width", width},
+            {"height", height},
+            {"region", "0," + std::to_string(width) + ",0," + std::to_string(height)},
+            {"spp", spp},
+            {"depth", depth},
+            {"seed", seed},
+            {"load_ms", scene->loadMs},
+            {"trace_ms", frame.gpuMs},
+            {"trace_ms_median", frame.gpuMs},
+            {"wall_ms", frame.wallMs},
+            {"wall_ms_median", frame.wallMs},
+            {"frames", 1},
+            {"tiles", tileStats(frame.tiles)},
+            {"scene_gpu_bytes", gpuBytesStats(sceneArrays)},
+            {"phases_ms",
+             {{"tracer", tracerMs}, // 0: kept from the last render
+              {"frames", frame.wallMs},
+              {"readback", readbackMs},
+              {"arrays", arraysMs}}}};
         stats.update(sceneStats(*scene->prepared));
         stats.update(frameStats(frame.rays, frame.gpuMs, frame.resumeDispatches));
         lastStats_ = std::move(stats);
@@ -160,7 +187,7 @@ public:
     std::string device() const { return context_->deviceName(); }
     py::object lastStats() {
         if (lastStatsDict_.is_none())
-            lastStatsDict_ = py::module_::import("json").attr("loads")(lastStats_.dump());
+            lastStatsDict_ = toPython(lastStats_);
         return lastStatsDict_;
     }
 
@@ -189,8 +216,7 @@ void bindRenderer(py::module_ &m) {
              "GPU if there is one, else lavapipe); validation: Vulkan validation layers, a "
              "message then fails the render.")
         .def("render", &PyRenderer::render, py::arg("scene"), py::arg("width") = 640,
-             py::arg("height") = 480, py::arg("spp") = 1, py::arg("depth") = 5,
-             py::arg("seed") = 0,
+             py::arg("height") = 480, py::arg("spp") = 1, py::arg("depth") = 5, py::arg("seed") = 0,
              py::arg("aovs") = std::vector<std::string>{"rgb"},
              "Renders `scene` through its camera. Returns a dict of float32 NumPy arrays, "
              "C-contiguous, height x width x channels, row 0 at the top: 'rgb' (linear "

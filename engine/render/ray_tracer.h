@@ -47,11 +47,19 @@ struct FrameResult {
     std::array<uint32_t, 3> tiles{};
 };
 
+// Where RayTracer::readbackInto writes, each of the region's size (row 0 = top); null: not
+// wanted. depth and normal need TracerOptions::writeAov.
+struct ReadbackTargets {
+    float *rgb = nullptr;    // 3 floats a pixel: mean radiance (TracedImage::rgba less alpha)
+    float *depth = nullptr;  // 1 a pixel (TracedImage::depth)
+    float *normal = nullptr; // 3 a pixel (TracedImage::normal)
+};
+
 struct TracedImage {
     uint32_t width = 0, height = 0; // the region's (TracerOptions::region), else the image's
     uint32_t x0 = 0, y0 = 0;        // where the region starts in the image
     uint32_t fullWidth = 0, fullHeight = 0; // the whole image the camera sees
-    std::vector<float> rgba;   // mean radiance, alpha 1, row 0 = top
+    std::vector<float> rgba;                // mean radiance, alpha 1, row 0 = top
     std::vector<float> depth;  // with writeAov: distance to the hit of the centre ray, +inf miss
     std::vector<float> normal; // with writeAov: xyz per pixel, facing the ray, 0 on a miss
 };
@@ -82,8 +90,7 @@ public:
     // With `copyOut`, the frame's last submission also copies the image out for readback, which
     // then submits nothing (on lavapipe a submission and its wait cost about 0.7 ms).
     FrameResult renderFrame(const Camera &camera, uint32_t samplesPerPixel,
-                            const std::function<void(double)> &progress = {},
-                            bool copyOut = false);
+                            const std::function<void(double)> &progress = {}, bool copyOut = false);
 
     // Every ray the frame in progress has counted so far (primary, shadow, secondary): read by
     // renderFrame's progress callback, which runs after each submission's fence, so that a
@@ -93,6 +100,12 @@ public:
     // Copies the accumulation (and AOVs) of the region (TracerOptions::region; else the whole
     // image) to the host and divides by the sample count.
     TracedImage readback(uint32_t samplesPerPixel);
+    // The same into the caller's arrays, in one pass over the mapped copies (the Python
+    // module's NumPy arrays: a TracedImage copied again took a 320x240 view 0.5 ms).
+    void readbackInto(uint32_t samplesPerPixel, const ReadbackTargets &targets);
+    // Whether the host reads the images where the tracer wrote them (a CPU device whose linear
+    // images can be storage images), not through a copy (TracerOptions::copiedReadback).
+    bool readsInPlace() const { return inPlaceReadback_; }
     // The class of each 8x8 tile (row by row) in the last frame traced (tileClasses): which
     // tracer ran it. Empty before the first frame and after resumable ones (all full there).
     const std::vector<uint8_t> &lastTileClasses() const { return lastTileClasses_; }
@@ -152,8 +165,10 @@ private:
     void recordSamples(VkCommandBuffer commands, gpu::GpuFrameParams params, const TileLists &lists,
                        uint32_t firstSample, uint32_t count);
     // The class of each tile for `params`' camera (render/traced_tiles.h, tileClasses); all
-    // full when culling is off.
-    std::vector<uint8_t> frameTileClasses(const gpu::GpuFrameParams &params) const;
+    // full when culling is off. `starts`: the frame's tile start distances, where made (the
+    // tiles that see the geometry are read from them).
+    std::vector<uint8_t> frameTileClasses(const gpu::GpuFrameParams &params,
+                                          const std::vector<float> *starts) const;
     // The frame's tile lists by class, the classes kept for lastTileClasses; with `reuse`, the
     // last lists where they were made for the same parameters. Valid until the next call or
     // resize().
@@ -203,7 +218,7 @@ private:
     void choosePlaneGuards(const Scene &scene);
 
     vk::Context &context_;
-    TracerOptions options_; // as given: setScene chooses the variants again by them
+    TracerOptions options_;           // as given: setScene chooses the variants again by them
     uint32_t width_ = 0, height_ = 0; // the whole image's
     PixelRect region_;                // what readback returns: the whole image, or a part
     // The tiles round region_: what the frames trace and the accumulation holds, from the
@@ -225,11 +240,17 @@ private:
     vk::Image aov_;
     // Host-visible copies of accum_ and aov_ for readback, kept between frames: made anew for
     // each, their allocation and first touch cost a 320x240 frame 0.5 ms (a loop of views).
+    // Unused where inPlaceReadback_: the images are host-readable and read where they are.
     vk::Buffer readbackColour_, readbackAov_;
+    bool inPlaceReadback_ = false;
     // The readback buffers hold the accumulation as it is now (renderFrame's copyOut): every
     // recording that writes the accumulation clears it.
     bool copiedOut_ = false;
     void recordCopyOut(VkCommandBuffer commands);
+    void copyOutUnlessCopied(); // readback's copy, where the frame did not make it
+    // Row y of the region as read back (the image itself, or its copy): RGBA floats.
+    const float *readbackRow(bool aov, uint32_t y) const;
+    void readAov(float *depth, float *normal) const; // null: not wanted
     vk::Buffer tileList_; // rg32ui, one entry per tile of the image: tile, start distance
     vk::BufferView tileListView_;
     vk::TimestampQueries timestamps_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <map>
 
@@ -39,7 +40,8 @@ TileSpan tileSpan(uint32_t tx, uint32_t ty, double width, double height) {
 struct RayFrame {
     glm::dvec3 eye, forward, du, dv;
     bool parallel;
-    glm::dmat3 toImage; // p - eye -> (a, b, c) with p - eye = a du + b dv + c forward
+    glm::dmat3 toImage;    // p - eye -> (a, b, c) with p - eye = a du + b dv + c forward
+    glm::dmat3 absToImage; // toImage's entries' magnitudes
 };
 
 // A ray o + t d (t > 0) hits the plane n.p = w where w - n.o and n.d have the same sign. The
@@ -72,65 +74,163 @@ bool tileMayHitAPlane(const RayFrame &cam, const TileSpan &span,
     return false;
 }
 
-// `box` grown by a relative margin, so that rounding in the host's own arithmetic cannot cut it.
-Aabb padded(const Aabb &box) {
-    glm::dvec3 pad =
-        kEpsilon * (glm::abs(box.max - box.min) + glm::abs(box.min) + glm::abs(box.max)) + 1e-30;
-    Aabb grown;
-    grown.min = box.min - pad;
-    grown.max = box.max + pad;
-    return grown;
-}
+// Boxes are projected a batch at a time: the arithmetic runs in plain loops over arrays, which
+// the compiler turns into SIMD instructions, and only the loops over each box's tiles that
+// follow branch. Tens of thousands of boxes a frame, on the host while the device waits.
+constexpr size_t kBatch = 128;
 
-// Corner k (0-7: bit 0 x, bit 1 y, bit 2 z high) of `box`.
-glm::dvec3 corner(const Aabb &box, int k) {
-    return {(k & 1) ? box.max.x : box.min.x, (k & 2) ? box.max.y : box.min.y,
-            (k & 4) ? box.max.z : box.min.z};
-}
-
-// Where a box can be seen: the rectangle of image-plane coordinates its rays pass through.
-// Perspective rays leave the eye along forward + x du + y dv, so a point at (a, b, c) is seen at
-// (a / c, b / c) when c > 0, and the rays through a box in front of the eye cross the image
-// plane inside the hull of its corners' images. Parallel rays leave (x, y) along forward: a
-// point is seen at (a, b) when c > 0. Returns false when the box is behind the camera; `all` is
-// set when it reaches back to the eye's plane (then any ray may meet it).
-struct ImageRect {
-    double x0, x1, y0, y1;
+// What the tiles need of each box of a batch.
+struct ProjectedBoxes {
+    // The nearest and farthest of the box along the camera's forward axis (c below), and how
+    // near the eye's plane the nearest may come before it counts as reaching back to it.
+    double nearC[kBatch], farC[kBatch], backLimit[kBatch];
+    // The pixels whose sample positions may fall where the box is seen, with one more each side
+    // (the tile span's margin): unclipped.
+    double px0[kBatch], px1[kBatch], py0[kBatch], py1[kBatch];
+    // A distance along the rays before which none meets the box, with a relative margin far
+    // above the shader's rounding (a few 1e-7 of it), and never below 0.
+    double distance[kBatch];
 };
-bool boxImage(const RayFrame &cam, const Aabb &box, ImageRect &rect, bool &all) {
-    Aabb grown = padded(box);
-    rect = {INFINITY, -INFINITY, INFINITY, -INFINITY};
-    all = false;
-    bool inFront = false, reachesBack = false;
-    // The corners' (a, b, c) from the lowest corner's and the box's edges along the camera's
-    // axes: three products instead of eight (tens of thousands of boxes a frame; the results
-    // differ from the direct products in the last bits, far inside the padding).
-    glm::dvec3 base = cam.toImage * (grown.min - cam.eye);
-    glm::dvec3 size = grown.max - grown.min;
-    glm::dvec3 edge[3] = {cam.toImage[0] * size.x, cam.toImage[1] * size.y,
-                          cam.toImage[2] * size.z};
-    for (int k = 0; k < 8; ++k) {
-        glm::dvec3 abc = base;
-        for (int a = 0; a < 3; ++a)
-            if (k & (1 << a))
-                abc += edge[a];
-        inFront = inFront || abc.z > 0.0;
-        if (cam.parallel) {
-            rect = {std::min(rect.x0, abc.x), std::max(rect.x1, abc.x), std::min(rect.y0, abc.y),
-                    std::max(rect.y1, abc.y)};
-            continue;
-        }
-        // A corner near or behind the eye's plane would project far off or flipped.
-        if (abc.z <= kEpsilon * (std::abs(abc.x) + std::abs(abc.y) + std::abs(abc.z))) {
-            reachesBack = true;
-            continue;
-        }
-        double inverse = 1.0 / abc.z, x = abc.x * inverse, y = abc.y * inverse;
-        rect = {std::min(rect.x0, x), std::max(rect.x1, x), std::min(rect.y0, y),
-                std::max(rect.y1, y)};
+
+// Projects boxes[0, count) (count <= kBatch). Each box is first grown by a relative margin, so
+// that rounding in the host's own arithmetic cannot cut it.
+//
+// Where a box is seen: perspective rays leave the eye along forward + x du + y dv, so a point at
+// (a, b, c) is seen at (a / c, b / c) when c > 0; parallel rays leave (x, y) along forward, so
+// it is seen at (a, b). The box's (a, b, c) lie in centre +- extent, with extent = |toImage|
+// half-size (the exact ranges of a linear map over a box), and the rectangle is that of a / c
+// over those ranges: for fixed a, a / c is monotonic in c, so its extremes are at the ranges'
+// ends. Two divisions a box where projecting its eight corners took eight; the rectangle is the
+// corners' one grown by what the box's depth range adds (c's range against c: under 1% for the
+// start blocks of a scene in view), which only ever adds tiles.
+//
+// How far rays go before they may meet it: perspective rays leave the eye with unit directions,
+// so that is the distance from the eye, at least the box's. Parallel rays leave the image plane
+// along forward: a point's depth beyond that plane, less what du and dv add to it for a camera
+// whose axes are not quite square (samples lie within a pixel of the image: |x|, |y| < 1.1 for
+// any image of 20 pixels).
+template <bool Parallel>
+void projectBoxes(const RayFrame &cam, double width, double height, const Aabb *boxes, size_t count,
+                  ProjectedBoxes &out) {
+    double lx[kBatch], ly[kBatch], lz[kBatch], ux[kBatch], uy[kBatch], uz[kBatch];
+    for (size_t i = 0; i < count; ++i) {
+        lx[i] = boxes[i].min.x, ly[i] = boxes[i].min.y, lz[i] = boxes[i].min.z;
+        ux[i] = boxes[i].max.x, uy[i] = boxes[i].max.y, uz[i] = boxes[i].max.z;
     }
-    all = inFront && reachesBack;
-    return inFront;
+    // Copied out of the camera, so that the stores below cannot be taken to change them.
+    const glm::dmat3 m = cam.toImage, am = cam.absToImage;
+    const glm::dvec3 eye = cam.eye, f = cam.forward, af = glm::abs(cam.forward);
+    const double ff = glm::dot(f, f),
+                 skew = 1.1 * (std::abs(glm::dot(cam.du, f)) + std::abs(glm::dot(cam.dv, f))) / ff;
+    const double m00 = m[0][0], m10 = m[1][0], m20 = m[2][0], m01 = m[0][1], m11 = m[1][1],
+                 m21 = m[2][1], m02 = m[0][2], m12 = m[1][2], m22 = m[2][2];
+    const double n00 = am[0][0], n10 = am[1][0], n20 = am[2][0], n01 = am[0][1], n11 = am[1][1],
+                 n21 = am[2][1], n02 = am[0][2], n12 = am[1][2], n22 = am[2][2];
+    auto pad = [](double lo, double hi) {
+        return kEpsilon * (std::abs(hi - lo) + std::abs(lo) + std::abs(hi)) + 1e-30;
+    };
+    for (size_t i = 0; i < count; ++i) {
+        // Centre (from the eye) and half-size, padded.
+        double cx = 0.5 * (lx[i] + ux[i]) - eye.x, cy = 0.5 * (ly[i] + uy[i]) - eye.y,
+               cz = 0.5 * (lz[i] + uz[i]) - eye.z;
+        double hx = 0.5 * (ux[i] - lx[i]) + pad(lx[i], ux[i]),
+               hy = 0.5 * (uy[i] - ly[i]) + pad(ly[i], uy[i]),
+               hz = 0.5 * (uz[i] - lz[i]) + pad(lz[i], uz[i]);
+        double a = m00 * cx + m10 * cy + m20 * cz;
+        double b = m01 * cx + m11 * cy + m21 * cz;
+        double c = m02 * cx + m12 * cy + m22 * cz;
+        double ea = n00 * hx + n10 * hy + n20 * hz;
+        double eb = n01 * hx + n11 * hy + n21 * hz;
+        double ec = n02 * hx + n12 * hy + n22 * hz;
+        double a0 = a - ea, a1 = a + ea, b0 = b - eb, b1 = b + eb, c0 = c - ec, c1 = c + ec;
+        double x0 = a0, x1 = a1, y0 = b0, y1 = b1;
+        if constexpr (!Parallel) {
+            double nearInverse = 1.0 / c0, farInverse = 1.0 / c1;
+            x0 = std::min(a0 * nearInverse, a0 * farInverse);
+            x1 = std::max(a1 * nearInverse, a1 * farInverse);
+            y0 = std::min(b0 * nearInverse, b0 * farInverse);
+            y1 = std::max(b1 * nearInverse, b1 * farInverse);
+        }
+        out.nearC[i] = c0;
+        out.farC[i] = c1;
+        out.backLimit[i] = kEpsilon * (std::max(std::abs(a0), std::abs(a1)) +
+                                       std::max(std::abs(b0), std::abs(b1)) + c1);
+        out.px0[i] = (x0 + 1.0) * 0.5 * width - 1.0;
+        out.px1[i] = (x1 + 1.0) * 0.5 * width + 1.0;
+        out.py0[i] = (1.0 - y1) * 0.5 * height - 1.0;
+        out.py1[i] = (1.0 - y0) * 0.5 * height + 1.0;
+        double t;
+        if constexpr (Parallel) {
+            t = (f.x * cx + f.y * cy + f.z * cz - (af.x * hx + af.y * hy + af.z * hz)) / ff - skew;
+        } else {
+            double gx = std::max(std::abs(cx) - hx, 0.0), gy = std::max(std::abs(cy) - hy, 0.0),
+                   gz = std::max(std::abs(cz) - hz, 0.0);
+            t = std::sqrt(gx * gx + gy * gy + gz * gz);
+        }
+        out.distance[i] = std::max(0.0, t * (1.0 - 1e-4));
+    }
+}
+
+void projectBoxes(const RayFrame &cam, double width, double height, const Aabb *boxes, size_t count,
+                  ProjectedBoxes &out) {
+    if (cam.parallel)
+        projectBoxes<true>(cam, width, height, boxes, count, out);
+    else
+        projectBoxes<false>(cam, width, height, boxes, count, out);
+}
+
+// Box i's tiles: false when its rays miss the image (or it is behind the camera); `all` when
+// every ray may meet it: a perspective camera's box whose nearest point is near or behind the
+// eye's plane, which would project far off or flipped.
+bool projectedTiles(const RayFrame &cam, const ProjectedBoxes &boxes, size_t i, uint32_t width,
+                    uint32_t height, TileRect &tiles, bool &all) {
+    TileRect image = imageTiles(width, height);
+    all = false;
+    if (boxes.farC[i] <= 0.0)
+        return false;
+    if (!cam.parallel && boxes.nearC[i] <= boxes.backLimit[i]) {
+        all = true;
+        tiles = image;
+        return true;
+    }
+    double px0 = boxes.px0[i], px1 = boxes.px1[i], py0 = boxes.py0[i], py1 = boxes.py1[i];
+    if (px1 < 0.0 || py1 < 0.0 || px0 >= width || py0 >= height)
+        return false;
+    tiles.x0 = uint32_t(std::max(0.0, px0)) / kTileSize;
+    tiles.y0 = uint32_t(std::max(0.0, py0)) / kTileSize;
+    tiles.x1 = std::min(image.x1, uint32_t(std::min(double(width), px1)) / kTileSize + 1);
+    tiles.y1 = std::min(image.y1, uint32_t(std::min(double(height), py1)) / kTileSize + 1);
+    return true;
+}
+
+// Box i's distance rounded down to a float (the shader's t is one).
+float projectedStart(const ProjectedBoxes &boxes, size_t i) {
+    double d = boxes.distance[i];
+    float start = float(d);
+    // Rounded up: the next float towards 0, which is the bits less one for a positive float
+    // (+inf included: the largest float).
+    if (double(start) > d)
+        start = std::bit_cast<float>(std::bit_cast<uint32_t>(start) - 1u);
+    return start;
+}
+
+// Calls visit(tiles, all, start) for each of boxes[first, last) that camera rays of `frame` may
+// meet (projectedTiles, projectedStart), projecting a batch at a time, until visit returns false.
+template <typename Visit>
+void forEachSeenBox(const gpu::GpuFrameParams &frame, const RayFrame &cam,
+                    const std::vector<Aabb> &boxes, size_t first, size_t last, Visit visit) {
+    ProjectedBoxes projected;
+    for (size_t batch = first; batch < last; batch += kBatch) {
+        size_t count = std::min(kBatch, last - batch);
+        projectBoxes(cam, frame.image.x, frame.image.y, &boxes[batch], count, projected);
+        for (size_t i = 0; i < count; ++i) {
+            TileRect tiles;
+            bool all;
+            if (projectedTiles(cam, projected, i, frame.image.x, frame.image.y, tiles, all) &&
+                !visit(tiles, all, projectedStart(projected, i)))
+                return;
+        }
+    }
 }
 
 // The blocks of a grid of at most `blocks` per axis over `grid`'s box that some primitive's
@@ -251,35 +351,12 @@ namespace {
 RayFrame rayFrame(const gpu::GpuFrameParams &frame) {
     // The camera as the shader has it: the frame's floats.
     RayFrame cam{glm::dvec3(frame.eye), glm::dvec3(frame.forward),    glm::dvec3(frame.du),
-                 glm::dvec3(frame.dv),  gpu::isParallelCamera(frame), glm::dmat3(1.0)};
+                 glm::dvec3(frame.dv),  gpu::isParallelCamera(frame), glm::dmat3(1.0),
+                 glm::dmat3(1.0)};
     cam.toImage = glm::inverse(glm::dmat3(cam.du, cam.dv, cam.forward));
+    for (int column = 0; column < 3; ++column)
+        cam.absToImage[column] = glm::abs(cam.toImage[column]);
     return cam;
-}
-
-// The tiles whose camera rays may pass through `box`: false when none may; `all` when every
-// one may (the box reaches back to the eye's plane).
-bool boxTiles(const gpu::GpuFrameParams &frame, const RayFrame &cam, const Aabb &box,
-              TileRect &tiles, bool &all) {
-    uint32_t width = frame.image.x, height = frame.image.y;
-    TileRect image = imageTiles(width, height);
-    ImageRect r;
-    if (!boxImage(cam, box, r, all))
-        return false;
-    if (all) {
-        tiles = image;
-        return true;
-    }
-    // Pixels whose sample positions may fall in the rectangle, one more each side (the tile
-    // span's margin), then their tiles.
-    double px0 = (r.x0 + 1.0) * 0.5 * width - 1.0, px1 = (r.x1 + 1.0) * 0.5 * width + 1.0;
-    double py0 = (1.0 - r.y1) * 0.5 * height - 1.0, py1 = (1.0 - r.y0) * 0.5 * height + 1.0;
-    if (px1 < 0.0 || py1 < 0.0 || px0 >= width || py0 >= height)
-        return false;
-    tiles.x0 = uint32_t(std::max(0.0, px0)) / kTileSize;
-    tiles.y0 = uint32_t(std::max(0.0, py0)) / kTileSize;
-    tiles.x1 = std::min(image.x1, uint32_t(std::min(double(width), px1)) / kTileSize + 1);
-    tiles.y1 = std::min(image.y1, uint32_t(std::min(double(height), py1)) / kTileSize + 1);
-    return true;
 }
 
 // For each tile: 1 where a camera ray may pass through one of the boxes.
@@ -293,18 +370,17 @@ std::vector<uint8_t> tilesSeeingBoxes(const gpu::GpuFrameParams &frame, const Ra
     auto at = [&](uint32_t x, uint32_t y) -> int32_t & {
         return marks[size_t(y) * (tilesX + 1) + x];
     };
-    for (const Aabb &box : boxes) {
-        TileRect t;
-        bool all;
-        if (!boxTiles(frame, cam, box, t, all))
-            continue;
-        if (all)
-            return std::vector<uint8_t>(size_t(tilesX) * tilesY, 1);
+    bool everyTile = false;
+    forEachSeenBox(frame, cam, boxes, 0, boxes.size(), [&](const TileRect &t, bool all, float) {
+        everyTile = all;
         at(t.x0, t.y0) += 1;
         at(t.x1, t.y0) -= 1;
         at(t.x0, t.y1) -= 1;
         at(t.x1, t.y1) += 1;
-    }
+        return !all;
+    });
+    if (everyTile)
+        return std::vector<uint8_t>(size_t(tilesX) * tilesY, 1);
     std::vector<uint8_t> seen(size_t(tilesX) * tilesY, 0);
     std::vector<int32_t> column(tilesX + 1, 0); // running sums down each column
     for (uint32_t ty = 0; ty < tilesY; ++ty) {
@@ -318,30 +394,6 @@ std::vector<uint8_t> tilesSeeingBoxes(const gpu::GpuFrameParams &frame, const Ra
     return seen;
 }
 
-// A distance t below which no camera ray o + t d of the frame meets the box. Perspective rays
-// leave the eye with unit directions, so t is the distance from the eye, at least the box's.
-// Parallel rays leave the image plane along forward: t is a point's depth beyond that plane,
-// less what du and dv add to it for a camera whose axes are not quite square. With a relative
-// margin far above the shader's rounding (a few 1e-7 of t), and never below 0.
-double distanceBeforeBox(const RayFrame &cam, const Aabb &box) {
-    Aabb grown = padded(box);
-    double t;
-    if (cam.parallel) {
-        double ff = glm::dot(cam.forward, cam.forward);
-        t = INFINITY;
-        for (int k = 0; k < 8; ++k)
-            t = std::min(t, glm::dot(corner(grown, k) - cam.eye, cam.forward) / ff);
-        // Samples lie within a pixel of the image: |x|, |y| < 1.1 for any image of 20 pixels.
-        t -= 1.1 *
-             (std::abs(glm::dot(cam.du, cam.forward)) + std::abs(glm::dot(cam.dv, cam.forward))) /
-             ff;
-    } else {
-        t = glm::length(
-            glm::max(glm::max(grown.min - cam.eye, cam.eye - grown.max), glm::dvec3(0.0)));
-    }
-    return std::max(0.0, t * (1.0 - 1e-4));
-}
-
 bool tileSeesAPlane(const gpu::GpuFrameParams &frame, const RayFrame &cam,
                     const std::vector<glm::dvec4> &planes, uint32_t tx, uint32_t ty) {
     return !planes.empty() &&
@@ -350,9 +402,28 @@ bool tileSeesAPlane(const gpu::GpuFrameParams &frame, const RayFrame &cam,
 
 } // namespace
 
-std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent) {
+namespace {
+
+// For each tile: 1 where a camera ray may meet the extent's boxes. From the start distances
+// where the caller has them: the start blocks hold the same surfaces, in finer blocks, and a
+// tile's start is finite exactly where one of them may be met (no second projection of boxes).
+std::vector<uint8_t> tilesSeeingExtent(const gpu::GpuFrameParams &frame, const RayFrame &cam,
+                                       const SceneExtent &extent,
+                                       const std::vector<float> *starts) {
+    if (!starts)
+        return tilesSeeingBoxes(frame, cam, extent.boxes);
+    std::vector<uint8_t> seen(starts->size());
+    for (size_t i = 0; i < seen.size(); ++i)
+        seen[i] = (*starts)[i] < kNoBoxAhead ? 1 : 0;
+    return seen;
+}
+
+} // namespace
+
+std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent,
+                                     const std::vector<float> *starts) {
     RayFrame cam = rayFrame(frame);
-    std::vector<uint8_t> mayHit = tilesSeeingBoxes(frame, cam, extent.boxes);
+    std::vector<uint8_t> mayHit = tilesSeeingExtent(frame, cam, extent, starts);
     uint32_t tilesX = imageTiles(frame.image.x, frame.image.y).x1;
     for (size_t i = 0; i < mayHit.size(); ++i)
         mayHit[i] = mayHit[i] || tileSeesAPlane(frame, cam, extent.planes, uint32_t(i % tilesX),
@@ -361,9 +432,10 @@ std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const Sce
 }
 
 std::vector<uint8_t> tileClasses(const gpu::GpuFrameParams &frame, const SceneExtent &extent,
-                                 const std::vector<Aabb> &planeShadows) {
+                                 const std::vector<Aabb> &planeShadows,
+                                 const std::vector<float> *starts) {
     RayFrame cam = rayFrame(frame);
-    std::vector<uint8_t> classes = tilesSeeingBoxes(frame, cam, extent.boxes);
+    std::vector<uint8_t> classes = tilesSeeingExtent(frame, cam, extent, starts);
     std::vector<uint8_t> shadowed = tilesSeeingBoxes(frame, cam, planeShadows);
     uint32_t tilesX = imageTiles(frame.image.x, frame.image.y).x1;
     for (size_t i = 0; i < classes.size(); ++i) {
@@ -392,23 +464,14 @@ std::vector<float> tileStartDistances(const gpu::GpuFrameParams &frame,
     parallelFor(parts, [&](size_t part) {
         std::vector<float> &starts = partStarts[part];
         size_t first = boxes.size() * part / parts, last = boxes.size() * (part + 1) / parts;
-        for (size_t b = first; b < last; ++b) {
-            const Aabb &box = boxes[b];
-            TileRect t;
-            bool all;
-            if (!boxTiles(frame, cam, box, t, all))
-                continue;
-            // Rounded down to a float: the shader's t is one.
-            double d = distanceBeforeBox(cam, box);
-            float start = float(d);
-            if (double(start) > d)
-                start = std::nextafter(start, 0.0f);
+        forEachSeenBox(frame, cam, boxes, first, last, [&](const TileRect &t, bool, float start) {
             for (uint32_t y = t.y0; y < t.y1; ++y)
                 for (uint32_t x = t.x0; x < t.x1; ++x) {
                     float &tile = starts[size_t(y) * image.x1 + x];
                     tile = std::min(tile, start);
                 }
-        }
+            return true;
+        });
     });
     for (size_t part = 1; part < parts; ++part)
         for (size_t i = 0; i < tiles; ++i)
@@ -465,8 +528,8 @@ TileLists tileLists(const std::vector<uint8_t> &classes, const TileRect &image,
 }
 
 TileLists allTiles(const TileRect &image, const TileRect &window) {
-    return tileLists(std::vector<uint8_t>(size_t(image.width()) * image.height(), kTileFull),
-                     image, {}, 0, window);
+    return tileLists(std::vector<uint8_t>(size_t(image.width()) * image.height(), kTileFull), image,
+                     {}, 0, window);
 }
 
 } // namespace prism

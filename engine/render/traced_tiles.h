@@ -68,8 +68,11 @@ SceneExtent sceneExtent(const Scene &scene, const Grid &grid,
 // sample position in the tile, may hit a box or a plane of `extent`; 0 where every one provably
 // misses them all. Conservative: a pixel's margin round each tile and a relative margin on every
 // sign test and box, so that no ray the tracer could see hit something is left to the
-// background.
-std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent);
+// background. `starts`, where given, are tileStartDistances of `extent.startBoxes` for the same
+// frame: the boxes are then seen where those are finite (the start blocks hold the same
+// surfaces, finer), and not projected again.
+std::vector<uint8_t> tilesThatMayHit(const gpu::GpuFrameParams &frame, const SceneExtent &extent,
+                                     const std::vector<float> *starts = nullptr);
 
 // Which tracer a tile gets. Full: some camera ray may hit a box, or a plane where a shadow ray
 // may reach a box. Planes only: the rays may hit planes, and no shadow ray from those hits can
@@ -80,9 +83,10 @@ constexpr uint8_t kTileBackground = 0, kTileFull = 1, kTilePlanesOnly = 2;
 
 // For each tile (imageTiles, row by row): its class, by the boxes and planes of `extent` and the
 // boxes round the planes' shadow regions (planeShadowBoxes), with the margins of
-// tilesThatMayHit.
+// tilesThatMayHit (and its `starts`).
 std::vector<uint8_t> tileClasses(const gpu::GpuFrameParams &frame, const SceneExtent &extent,
-                                 const std::vector<Aabb> &planeShadows);
+                                 const std::vector<Aabb> &planeShadows,
+                                 const std::vector<float> *starts = nullptr);
 
 // For each tile (imageTiles, row by row): a distance along its camera rays before which none
 // of them meets a box of `boxes` (kNoBoxAhead where no ray of the tile meets one). The tracer

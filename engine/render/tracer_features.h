@@ -69,6 +69,10 @@ struct TracerOptions {
     // Scene arrays through a staging buffer even where the device shares the host's memory
     // (render/scene_buffers.h, UploadPath); only for the test that compares the two.
     bool stagedUpload = false;
+    // The image read back through a copy to a buffer even on a CPU device, where the host
+    // otherwise reads the accumulation in place (RayTracer::readback); only for the test that
+    // compares the two.
+    bool copiedReadback = false;
 };
 
 struct TracerFeatures {

@@ -7,8 +7,16 @@
 
 namespace prism::vk {
 
+bool Image::hostReadableSupported(const Context &context, VkFormat format,
+                                  VkImageUsageFlags usage) {
+    VkImageFormatProperties properties;
+    return vkGetPhysicalDeviceImageFormatProperties(context.physicalDevice(), format,
+                                                    VK_IMAGE_TYPE_2D, VK_IMAGE_TILING_LINEAR, usage,
+                                                    0, &properties) == VK_SUCCESS;
+}
+
 Image::Image(const Context &context, uint32_t width, uint32_t height, VkFormat format,
-             VkImageUsageFlags usage)
+             VkImageUsageFlags usage, bool hostReadable)
     : device_(context.device()), format_(format), width_(width), height_(height) {
     VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     info.imageType = VK_IMAGE_TYPE_2D;
@@ -17,7 +25,7 @@ Image::Image(const Context &context, uint32_t width, uint32_t height, VkFormat f
     info.mipLevels = 1;
     info.arrayLayers = 1;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
-    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.tiling = hostReadable ? VK_IMAGE_TILING_LINEAR : VK_IMAGE_TILING_OPTIMAL;
     info.usage = usage;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     VK_CHECK(vkCreateImage(device_, &info, nullptr, &image_));
@@ -26,10 +34,21 @@ Image::Image(const Context &context, uint32_t width, uint32_t height, VkFormat f
         vkGetImageMemoryRequirements(device_, image_, &requirements);
         VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
         alloc.allocationSize = requirements.size;
-        alloc.memoryTypeIndex = context.findMemoryType(requirements.memoryTypeBits,
-                                                       VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+        alloc.memoryTypeIndex = context.findMemoryType(
+            requirements.memoryTypeBits, hostReadable ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                                            VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                                                      : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
         VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
         VK_CHECK(vkBindImageMemory(device_, image_, memory_, 0));
+        if (hostReadable) {
+            VkImageSubresource texels{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0};
+            VkSubresourceLayout layout;
+            vkGetImageSubresourceLayout(device_, image_, &texels, &layout);
+            void *memory = nullptr;
+            VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &memory));
+            mapped_ = static_cast<const std::byte *>(memory) + layout.offset;
+            rowPitch_ = size_t(layout.rowPitch);
+        }
 
         VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         viewInfo.image = image_;
@@ -61,6 +80,8 @@ Image &Image::operator=(Image &&other) noexcept {
         format_ = other.format_;
         width_ = other.width_;
         height_ = other.height_;
+        mapped_ = std::exchange(other.mapped_, nullptr);
+        rowPitch_ = other.rowPitch_;
     }
     return *this;
 }
@@ -75,6 +96,7 @@ void Image::release() {
     view_ = VK_NULL_HANDLE;
     image_ = VK_NULL_HANDLE;
     memory_ = VK_NULL_HANDLE;
+    mapped_ = nullptr; // unmapped with its memory
 }
 
 } // namespace prism::vk

@@ -1,5 +1,7 @@
 #pragma once
 // A 2D VkImage with its memory and one view. Move-only owner.
+#include <cstddef>
+
 #include <vulkan/vulkan.h>
 
 namespace prism::vk {
@@ -9,8 +11,13 @@ class Context;
 class Image {
 public:
     Image() = default;
+    // With `hostReadable`, the host reads the image in place instead of from a copy: linear
+    // tiling in host-visible, coherent memory, mapped while the image lives. Only where
+    // hostReadableSupported says the device has it for the format and usage.
     Image(const Context &context, uint32_t width, uint32_t height, VkFormat format,
-          VkImageUsageFlags usage);
+          VkImageUsageFlags usage, bool hostReadable = false);
+    static bool hostReadableSupported(const Context &context, VkFormat format,
+                                      VkImageUsageFlags usage);
     ~Image();
     Image(Image &&other) noexcept;
     Image &operator=(Image &&other) noexcept;
@@ -22,6 +29,10 @@ public:
     VkFormat format() const { return format_; }
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
+    // A host-readable image's texels (null otherwise): row y at mapped() + y * rowPitch(), in
+    // the GENERAL layout once the device's writes are made visible to the host.
+    const std::byte *mapped() const { return mapped_; }
+    size_t rowPitch() const { return rowPitch_; }
 
 private:
     void release();
@@ -31,6 +42,8 @@ private:
     VkImageView view_ = VK_NULL_HANDLE;
     VkFormat format_ = VK_FORMAT_UNDEFINED;
     uint32_t width_ = 0, height_ = 0;
+    const std::byte *mapped_ = nullptr;
+    size_t rowPitch_ = 0;
 };
 
 } // namespace prism::vk
