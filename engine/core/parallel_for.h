@@ -11,6 +11,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/worker_pool.h"
+
 namespace prism {
 
 // The threads parallelFor may use; 0 means one per core. Set through ParallelThreads.
@@ -61,12 +63,15 @@ template <typename Body> void parallelFor(size_t count, Body body) {
             }
         }
     };
-    std::vector<std::thread> pool;
-    for (size_t t = 1; t < threads; ++t)
-        pool.emplace_back(work);
-    work();
-    for (std::thread &t : pool)
-        t.join();
+    // The pool's parked threads where it is free (core/worker_pool.h), else threads of its own.
+    if (!runOnWorkerPool(threads - 1, work)) {
+        std::vector<std::thread> own;
+        for (size_t t = 1; t < threads; ++t)
+            own.emplace_back(work);
+        work();
+        for (std::thread &t : own)
+            t.join();
+    }
     if (error)
         std::rethrow_exception(error);
 }

@@ -548,56 +548,57 @@ TracedImage RayTracer::readback(uint32_t samplesPerPixel) {
     size_t pixels = size_t(out.width) * out.height;
     copyOutUnlessCopied();
     out.rgba.resize(pixels * 4);
-    float scale = 1.0f / float(samplesPerPixel);
-    for (uint32_t y = 0; y < out.height; ++y) {
-        const float *sums = readbackRow(false, y);
-        float *rgba = &out.rgba[size_t(y) * out.width * 4];
-        for (size_t x = 0; x < out.width; ++x) {
-            for (int c = 0; c < 3; ++c)
-                rgba[x * 4 + c] = sums[x * 4 + c] * scale;
-            rgba[x * 4 + 3] = 1.0f;
-        }
-    }
+    ReadbackTargets targets;
     if (features_.writeAov) {
         out.depth.resize(pixels);
         out.normal.resize(pixels * 3);
-        readAov(out.depth.data(), out.normal.data());
+        targets.depth = out.depth.data();
+        targets.normal = out.normal.data();
     }
+    readRows(samplesPerPixel, targets, out.rgba.data());
     return out;
-}
-
-void RayTracer::readAov(float *depth, float *normal) const {
-    if (!depth && !normal)
-        return;
-    uint32_t width = region_.width();
-    for (uint32_t y = 0; y < region_.height(); ++y) {
-        const float *aov = readbackRow(true, y);
-        size_t row = size_t(y) * width;
-        if (depth)
-            for (size_t x = 0; x < width; ++x)
-                depth[row + x] = aov[x * 4 + 3];
-        if (normal)
-            for (size_t x = 0; x < width; ++x)
-                for (int c = 0; c < 3; ++c)
-                    normal[(row + x) * 3 + c] = aov[x * 4 + c];
-    }
 }
 
 void RayTracer::readbackInto(uint32_t samplesPerPixel, const ReadbackTargets &targets) {
     if ((targets.depth || targets.normal) && !features_.writeAov)
         throw Error("readback: depth and normals need a tracer made with writeAov");
     copyOutUnlessCopied();
+    readRows(samplesPerPixel, targets, nullptr);
+}
+
+void RayTracer::readRows(uint32_t samplesPerPixel, const ReadbackTargets &targets,
+                         float *rgba) const {
     float scale = 1.0f / float(samplesPerPixel);
-    uint32_t width = region_.width();
-    if (float *rgb = targets.rgb)
-        for (uint32_t y = 0; y < region_.height(); ++y) {
+    uint32_t width = region_.width(), height = region_.height();
+    auto rows = [&](uint32_t y0, uint32_t y1) {
+        for (uint32_t y = y0; y < y1; ++y) {
+            size_t first = size_t(y) * width; // the row's first pixel in the targets
             const float *sums = readbackRow(false, y);
-            float *row = rgb + size_t(y) * width * 3;
-            for (size_t x = 0; x < width; ++x)
-                for (int c = 0; c < 3; ++c)
-                    row[x * 3 + c] = sums[x * 4 + c] * scale;
+            if (rgba)
+                for (size_t x = 0; x < width; ++x) {
+                    for (int c = 0; c < 3; ++c)
+                        rgba[(first + x) * 4 + c] = sums[x * 4 + c] * scale;
+                    rgba[(first + x) * 4 + 3] = 1.0f;
+                }
+            if (targets.rgb)
+                for (size_t x = 0; x < width; ++x)
+                    for (int c = 0; c < 3; ++c)
+                        targets.rgb[(first + x) * 3 + c] = sums[x * 4 + c] * scale;
+            if (!targets.depth && !targets.normal)
+                continue;
+            const float *aov = readbackRow(true, y);
+            if (targets.depth)
+                for (size_t x = 0; x < width; ++x)
+                    targets.depth[first + x] = aov[x * 4 + 3];
+            if (targets.normal)
+                for (size_t x = 0; x < width; ++x)
+                    for (int c = 0; c < 3; ++c)
+                        targets.normal[(first + x) * 3 + c] = aov[x * 4 + c];
         }
-    readAov(targets.depth, targets.normal);
+    };
+    // On one core: in two bands of rows on both (parallelFor), a 320x240 image and its depth
+    // took 0.28 ms against 0.17 ms (a loop of views from Python).
+    rows(0, height);
 }
 
 } // namespace prism

@@ -250,7 +250,9 @@ private:
     void copyOutUnlessCopied(); // readback's copy, where the frame did not make it
     // Row y of the region as read back (the image itself, or its copy): RGBA floats.
     const float *readbackRow(bool aov, uint32_t y) const;
-    void readAov(float *depth, float *normal) const; // null: not wanted
+    // The region's rows into `targets` (and into `rgba`, 4 floats a pixel with alpha 1, where
+    // not null), divided by the sample count.
+    void readRows(uint32_t samplesPerPixel, const ReadbackTargets &targets, float *rgba) const;
     vk::Buffer tileList_; // rg32ui, one entry per tile of the image: tile, start distance
     vk::BufferView tileListView_;
     vk::TimestampQueries timestamps_;

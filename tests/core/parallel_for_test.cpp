@@ -1,13 +1,19 @@
 // parallelFor runs each index once, passes a body's exception on, and uses no more threads than
-// ParallelThreads allows (the thread-count determinism tests rely on that).
+// ParallelThreads allows (the thread-count determinism tests rely on that). Its kept threads
+// (core/worker_pool.h) serve one call at a time: calls nested in a body, from several threads
+// at once, and in a forked child all finish.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <csignal>
 #include <mutex>
 #include <set>
 #include <stdexcept>
 #include <thread>
 #include <vector>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -60,6 +66,59 @@ TEST(ParallelFor, UsesAtMostTheThreadsAllowed) {
     }
     EXPECT_EQ(parallelThreadCount(), std::max(1u, std::thread::hardware_concurrency()))
         << "the limit ends with its scope";
+}
+
+// The same threads serve call after call: the pool keeps them.
+TEST(ParallelFor, KeepsItsThreadsBetweenCalls) {
+    ParallelThreads limit(2);
+    std::set<std::thread::id> first = threadsUsed(), second = threadsUsed();
+    first.insert(second.begin(), second.end());
+    EXPECT_LE(first.size(), 2u) << "a call's helper is the last call's";
+}
+
+// A body that calls parallelFor, and calls from several threads at once, while the pool is in
+// use: each runs every index once (on threads of its own) and none waits for ever.
+TEST(ParallelFor, NestedAndConcurrentCallsFinish) {
+    std::vector<std::atomic<int>> runs(64 * 64);
+    parallelFor(64, [&](size_t i) { parallelFor(64, [&](size_t j) { ++runs[i * 64 + j]; }); });
+    for (const std::atomic<int> &r : runs)
+        ASSERT_EQ(r, 1);
+    std::vector<std::atomic<int>> counts(4 * 1000);
+    std::vector<std::thread> callers;
+    for (size_t c = 0; c < 4; ++c)
+        callers.emplace_back([&, c] {
+            for (int round = 0; round < 20; ++round)
+                parallelFor(50, [&](size_t i) { ++counts[c * 1000 + size_t(round) * 50 + i]; });
+        });
+    for (std::thread &t : callers)
+        t.join();
+    for (const std::atomic<int> &r : counts)
+        ASSERT_EQ(r, 1);
+}
+
+// A child forked after the pool has threads (Python's multiprocessing does that) has none of
+// them: its parallelFor must start its own and finish, not wait for the parent's.
+TEST(ParallelFor, FinishesInAForkedChild) {
+    threadsUsed(); // the pool has its threads now
+    pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        std::atomic<int> sum{0};
+        parallelFor(1000, [&](size_t i) { sum += int(i); });
+        _exit(sum == 999 * 1000 / 2 ? 0 : 1);
+    }
+    int status = 0;
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (waitpid(child, &status, WNOHANG) == 0) {
+        if (std::chrono::steady_clock::now() > deadline) {
+            kill(child, SIGKILL);
+            waitpid(child, &status, 0);
+            FAIL() << "the forked child's parallelFor did not finish in 20 s";
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "the child's parallelFor ran each index once";
 }
 
 } // namespace
