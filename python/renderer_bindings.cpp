@@ -1,7 +1,5 @@
 // prism.Renderer: the Vulkan device, and the tracer of the last scene and settings rendered.
-#include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <memory>
 #include <mutex>
 #include <optional>

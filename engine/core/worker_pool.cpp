@@ -6,10 +6,12 @@
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <new>
 #include <system_error>
 #include <thread>
+#include <vector>
 
 namespace prism {
 namespace {
@@ -19,7 +21,9 @@ constexpr size_t kMaxWorkers = 256;
 struct Pool {
     std::atomic<bool> inUse{false};
     std::mutex mutex; // guards what follows
-    std::condition_variable wake, done;
+    // One for each worker: a job wakes only the workers it wants (a few parts on many cores).
+    std::vector<std::unique_ptr<std::condition_variable>> wakes;
+    std::condition_variable done;
     size_t started = 0;      // workers made (detached), numbered 0 .. started - 1
     uint64_t generation = 0; // one more for each job handed out
     size_t wanted = 0;       // the workers 0 .. wanted - 1 take the current job
@@ -46,10 +50,10 @@ Pool &workerPool() {
     return *pool;
 }
 
-void workerLoop(Pool &p, size_t index, uint64_t seen) {
+void workerLoop(Pool &p, size_t index, uint64_t seen, std::condition_variable &wake) {
     std::unique_lock lock(p.mutex);
     for (;;) {
-        p.wake.wait(lock, [&] { return p.generation != seen; });
+        wake.wait(lock, [&] { return p.generation != seen; });
         seen = p.generation;
         if (index >= p.wanted)
             continue;
@@ -76,8 +80,13 @@ bool runOnWorkerPool(size_t workers, const std::function<void()> &job) {
     {
         std::lock_guard lock(p.mutex);
         try {
-            for (; p.started < workers; ++p.started)
-                std::thread(workerLoop, std::ref(p), p.started, p.generation).detach();
+            for (; p.started < workers; ++p.started) {
+                if (p.wakes.size() == p.started)
+                    p.wakes.push_back(std::make_unique<std::condition_variable>());
+                std::thread(workerLoop, std::ref(p), p.started, p.generation,
+                            std::ref(*p.wakes[p.started]))
+                    .detach();
+            }
         } catch (const std::system_error &) {
             // No more threads to be had: the job runs on those there are.
         }
@@ -86,7 +95,8 @@ bool runOnWorkerPool(size_t workers, const std::function<void()> &job) {
         p.job = &job;
         ++p.generation;
     }
-    p.wake.notify_all();
+    for (size_t w = 0; w < p.wanted; ++w)
+        p.wakes[w]->notify_one();
     job();
     {
         std::unique_lock lock(p.mutex);

@@ -88,7 +88,8 @@ public:
     // then on every frame of this tracer is. Throws prism::Error when a sample cannot be
     // finished even so (more walks than a pixel's log holds).
     // With `copyOut`, the frame's last submission also copies the image out for readback, which
-    // then submits nothing (on lavapipe a submission and its wait cost about 0.7 ms).
+    // then submits nothing (on lavapipe a submission and its wait cost about 0.7 ms). An image
+    // read in place (readsInPlace) needs no copy: readback after any frame submits nothing.
     FrameResult renderFrame(const Camera &camera, uint32_t samplesPerPixel,
                             const std::function<void(double)> &progress = {}, bool copyOut = false);
 
@@ -97,10 +98,11 @@ public:
     // long render can show its rays per second before the frame is done.
     uint64_t raysCounted() const { return decodeCounters(stats_.mapped()).rays.total(); }
 
-    // Copies the accumulation (and AOVs) of the region (TracerOptions::region; else the whole
-    // image) to the host and divides by the sample count.
+    // The accumulation (and AOVs) of the region (TracerOptions::region; else the whole image)
+    // on the host, divided by the sample count: read where the tracer wrote it (readsInPlace),
+    // else from a copy.
     TracedImage readback(uint32_t samplesPerPixel);
-    // The same into the caller's arrays, in one pass over the mapped copies (the Python
+    // The same into the caller's arrays, in one pass over the image (the Python
     // module's NumPy arrays: a TracedImage copied again took a 320x240 view 0.5 ms).
     void readbackInto(uint32_t samplesPerPixel, const ReadbackTargets &targets);
     // Whether the host reads the images where the tracer wrote them (a CPU device whose linear

@@ -203,14 +203,18 @@ bool projectedTiles(const RayFrame &cam, const ProjectedBoxes &boxes, size_t i, 
     return true;
 }
 
-// Box i's distance rounded down to a float (the shader's t is one).
+// Box i's distance rounded down to a float (the shader's t is one), and below kNoBoxAhead,
+// which marks a tile that sees no box.
+const float kFarthestStart = std::nextafter(kNoBoxAhead, 0.0f);
 float projectedStart(const ProjectedBoxes &boxes, size_t i) {
     double d = boxes.distance[i];
     float start = float(d);
-    // Rounded up: the next float towards 0, which is the bits less one for a positive float
-    // (+inf included: the largest float).
+    // Where the conversion rounded up, the next float towards 0: a positive float's bits less
+    // one (std::nextafter's answer, without its call on this hot path; +inf gives the largest
+    // float).
     if (double(start) > d)
         start = std::bit_cast<float>(std::bit_cast<uint32_t>(start) - 1u);
+    return std::min(start, kFarthestStart);
     return start;
 }
 
@@ -399,10 +403,6 @@ bool tileSeesAPlane(const gpu::GpuFrameParams &frame, const RayFrame &cam,
     return !planes.empty() &&
            tileMayHitAPlane(cam, tileSpan(tx, ty, frame.image.x, frame.image.y), planes);
 }
-
-} // namespace
-
-namespace {
 
 // For each tile: 1 where a camera ray may meet the extent's boxes. From the start distances
 // where the caller has them: the start blocks hold the same surfaces, in finer blocks, and a

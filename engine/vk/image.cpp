@@ -7,12 +7,19 @@
 
 namespace prism::vk {
 
-bool Image::hostReadableSupported(const Context &context, VkFormat format,
-                                  VkImageUsageFlags usage) {
+bool Image::hostReadableSupported(const Context &context, uint32_t width, uint32_t height,
+                                  VkFormat format, VkImageUsageFlags usage) {
     VkImageFormatProperties properties;
-    return vkGetPhysicalDeviceImageFormatProperties(context.physicalDevice(), format,
-                                                    VK_IMAGE_TYPE_2D, VK_IMAGE_TILING_LINEAR, usage,
-                                                    0, &properties) == VK_SUCCESS;
+    if (vkGetPhysicalDeviceImageFormatProperties(context.physicalDevice(), format, VK_IMAGE_TYPE_2D,
+                                                 VK_IMAGE_TILING_LINEAR, usage, 0,
+                                                 &properties) != VK_SUCCESS)
+        return false;
+    // Linear images may have smaller limits than optimal ones; 16 bytes a texel at most here.
+    if (width > properties.maxExtent.width || height > properties.maxExtent.height ||
+        VkDeviceSize(width) * height * 16 > properties.maxResourceSize)
+        return false;
+    return context.hasMemoryType(~0u, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                          VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
 }
 
 Image::Image(const Context &context, uint32_t width, uint32_t height, VkFormat format,

@@ -13,11 +13,11 @@ public:
     Image() = default;
     // With `hostReadable`, the host reads the image in place instead of from a copy: linear
     // tiling in host-visible, coherent memory, mapped while the image lives. Only where
-    // hostReadableSupported says the device has it for the format and usage.
+    // hostReadableSupported says the device has it for the size, format and usage.
     Image(const Context &context, uint32_t width, uint32_t height, VkFormat format,
           VkImageUsageFlags usage, bool hostReadable = false);
-    static bool hostReadableSupported(const Context &context, VkFormat format,
-                                      VkImageUsageFlags usage);
+    static bool hostReadableSupported(const Context &context, uint32_t width, uint32_t height,
+                                      VkFormat format, VkImageUsageFlags usage);
     ~Image();
     Image(Image &&other) noexcept;
     Image &operator=(Image &&other) noexcept;

@@ -12,6 +12,7 @@
 #include "render_helpers.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_origin.h"
+#include "vk/image.h"
 
 namespace prism::test {
 namespace {
@@ -79,6 +80,18 @@ TEST_F(Readback, InPlaceReadsWhatTheCopyReads) {
     EXPECT_EQ(a.normal, b.normal);
     EXPECT_EQ(a.width, 36u);
     EXPECT_EQ(a.height, 27u);
+}
+
+// Linear images have limits of their own: an image past them is not made host-readable (the
+// tracer then copies), while the tracer's usual sizes are.
+TEST_F(Readback, HostReadableOnlyWithinTheLinearImagesLimits) {
+    VkImageUsageFlags usage =
+        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
+    EXPECT_FALSE(vk::Image::hostReadableSupported(context(), 1u << 30, 1, format, usage));
+    if (context().properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
+        EXPECT_TRUE(vk::Image::hostReadableSupported(context(), 1024, 768, format, usage));
+    }
 }
 
 // readbackInto writes what readback returns into the caller's arrays (alpha left out), only
