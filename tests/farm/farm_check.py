@@ -109,9 +109,12 @@ def slurm_checks(bin_dir, work, env):
     tiles_dir.mkdir()
     run([bin_dir / "prism-render", STILL, "--size", "64x48", "--spp", "2", "--quiet", "-o",
          tiles_dir / "whole.exr"])
-    farm("slurm", [STILL, "-o", tiles_dir / "poster.exr", "--tiles", "16", "--", "--size",
-                   "64x48", "--spp", "2", "--quiet"], env)
+    farm("slurm", [STILL, "-o", tiles_dir / "poster.exr", "--tiles", "16", "--threads", "2",
+                   "--", "--size", "64x48", "--spp", "2", "--quiet"], env)
     check(len(list(tiles_dir.glob("poster.tile-*.exr"))) == 16, "16 tiles")
+    tile_logs = list((tiles_dir / "logs").glob("*_*.log"))
+    check(len(tile_logs) == 16 and all("LP_NUM_THREADS=2" in p.read_text() for p in tile_logs),
+          "--threads 2 did not reach every task's lavapipe")
     check(same_image(tiles_dir / "poster.exr", tiles_dir / "whole.exr"),
           "the merged still differs from the untiled render")
     check((tiles_dir / "poster.png").exists(), "no PNG of the merged still")
@@ -145,6 +148,11 @@ def slurm_checks(bin_dir, work, env):
     check_no_temporary_files(kill_dir)
     print(f"slurm: cancelled after {len(written)} of 8 frames, completed on resubmission",
           file=sys.stderr)
+
+    # No task waited for slurmd to read the user's login environment (a login shell before
+    # every task: what --export=ALL,VAR=... asks for).
+    slurmd_log = (work / "slurm" / "log" / "slurmd.log").read_text()
+    check("_get_user_env" not in slurmd_log, "slurmd read the login environment for a task")
 
 
 def parallel_checks(bin_dir, work, env):

@@ -84,6 +84,9 @@ SlurmctldPidFile=$dir/slurmctld.pid
 SlurmdPidFile=$dir/slurmd.pid
 SlurmctldLogFile=$dir/log/slurmctld.log
 SlurmdLogFile=$dir/log/slurmd.log
+# verbose: the log also says what slurmd does before a task starts (a login environment read
+# for it, _get_user_env, which tests/farm checks that prism-farm never asks for).
+SlurmdDebug=verbose
 # No cgroups here: processes are tracked through /proc, tasks are not confined.
 ProctrackType=proctrack/linuxproc
 TaskPlugin=task/none

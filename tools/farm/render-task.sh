@@ -42,6 +42,11 @@ if [[ -z ${LP_NUM_THREADS:-} && -n ${SLURM_CPUS_PER_TASK:-} ]]; then
     export LP_NUM_THREADS=$SLURM_CPUS_PER_TASK
 fi
 
+# For the task's log: how many threads lavapipe was given (unset: one a core of the node).
+threads_note() {
+    [[ -z ${LP_NUM_THREADS:-} ]] || echo ", LP_NUM_THREADS=$LP_NUM_THREADS"
+}
+
 device=()
 if [[ -n ${PRISM_DEVICE:-} ]]; then
     device=(--device "$PRISM_DEVICE")
@@ -58,7 +63,7 @@ frames)
     start=$((first + index * step))
     ((start <= last)) || die "task $index starts past the last frame $last: nothing to render"
     frames="$start-$last:$((tasks * step))"
-    echo "render-task: frames $frames of $scene on $(hostname -s)" >&2
+    echo "render-task: frames $frames of $scene on $(hostname -s)$(threads_note)" >&2
     exec "$render" "$scene" --frames "$frames" --skip-existing -o "$pattern" \
         "${device[@]}" "$@"
     ;;
@@ -66,7 +71,7 @@ tiles)
     [[ $# -ge 2 ]] || die "tiles needs COUNT PATTERN"
     count=$1 pattern=$2
     shift 2
-    echo "render-task: tile $index/$count of $scene on $(hostname -s)" >&2
+    echo "render-task: tile $index/$count of $scene on $(hostname -s)$(threads_note)" >&2
     exec "$render" "$scene" --tile "$index/$count" --skip-existing -o "$pattern" \
         "${device[@]}" "$@"
     ;;
