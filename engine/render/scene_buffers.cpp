@@ -106,7 +106,7 @@ struct ArraySource {
     void (*write)(const PackedScene &, std::byte *to);
 };
 
-// A vector of the packed scene, copied.
+// An array of the packed scene, copied.
 template <auto member> constexpr ArraySource fromPacked() {
     return {
         [](const PackedScene &p) { return uint64_t(std::as_bytes(std::span(p.*member)).size()); },
@@ -124,7 +124,18 @@ constexpr ArraySource kCellTriangles{
             p, std::span(reinterpret_cast<glm::uvec4 *>(to), size_t(cellTriangleRows(p))));
     }};
 
-// A vector of the packed scene, copied, but none of it where `unread` is set: the tracer then
+// The cell boxes, each with its first primitive (writeCellBoxes), none where the cell records
+// hold them.
+constexpr ArraySource kCellBoxes{
+    [](const PackedScene &p) {
+        return p.cellRecords ? 0 : uint64_t(p.cellBoxes.size() * sizeof(glm::uvec4));
+    },
+    [](const PackedScene &p, std::byte *to) {
+        if (!p.cellRecords)
+            writeCellBoxes(p, std::span(reinterpret_cast<glm::uvec4 *>(to), p.cellBoxes.size()));
+    }};
+
+// An array of the packed scene, copied, but none of it where `unread` is set: the tracer then
 // reads the same from elsewhere (the cell triangle array: PackedScene).
 template <auto member, bool PackedScene::*unread> constexpr ArraySource fromPackedUnless() {
     return {[](const PackedScene &p) { return p.*unread ? 0 : fromPacked<member>().bytes(p); },
@@ -175,8 +186,8 @@ const ArrayBinding kArrays[] = {
      kVec4Texels},
     {&B::gridEntries, fromPacked<&P::gridEntries>(), "grid voxel map", kBindingGridEntries,
      kBindingGridEntryTexels, kUintTexels},
-    {&B::cellBoxes, fromPackedUnless<&P::cellBoxes, &P::cellRecords>(), "grid cell box",
-     kBindingCellBoxes, kBindingCellBoxTexels, kUvec4Texels},
+    {&B::cellBoxes, kCellBoxes, "grid cell box", kBindingCellBoxes, kBindingCellBoxTexels,
+     kUvec4Texels},
     {&B::instances, fromPacked<&P::instances>(), "instance", kBindingInstances,
      kBindingInstanceTexels, kVec4Texels},
     {&B::meshGrids, fromPacked<&P::meshGrids>(), "mesh grid", kBindingMeshGrids,

@@ -32,17 +32,23 @@ void packInstances(const Scene &scene, const Grid &grid, const std::vector<uint3
     if (grid.meshGrids.size() != scene.prototypes.size())
         throw Error("the grid has " + std::to_string(grid.meshGrids.size()) + " mesh grids for " +
                     std::to_string(scene.prototypes.size()) + " prototypes");
+    if (!grid.meshGrids.empty()) { // the scene grid's arrays, then each prototype's
+        packed.ownedCellStart = grid.cellStart;
+        packed.ownedCellPrimitives = grid.cellPrimitives;
+    }
+    std::vector<uint32_t> &cellStart = packed.ownedCellStart;
+    std::vector<uint32_t> &cellPrimitives = packed.ownedCellPrimitives;
     for (size_t m = 0; m < grid.meshGrids.size(); ++m) {
         const Grid &g = grid.meshGrids[m];
-        uint64_t firstCell = packed.cellStart.size();
-        uint64_t firstEntry = packed.cellPrimitives.size();
+        uint64_t firstCell = cellStart.size();
+        uint64_t firstEntry = cellPrimitives.size();
         if (firstCell + g.cellStart.size() >= (uint64_t(1) << 32) ||
             firstEntry + g.cellPrimitives.size() >= (uint64_t(1) << 32))
             throw Error("the prototypes' grids hold more than 2^32 cells or entries");
         for (uint32_t start : g.cellStart)
-            packed.cellStart.push_back(uint32_t(firstEntry) + start);
+            cellStart.push_back(uint32_t(firstEntry) + start);
         for (uint32_t local : g.cellPrimitives)
-            packed.cellPrimitives.push_back(firstTriangle[1 + m] + local);
+            cellPrimitives.push_back(firstTriangle[1 + m] + local);
         glm::uvec3 res(g.resolution);
         packed.meshGrids.push_back({glm::vec4(g.boundsMin, 0.0f), glm::vec4(g.boundsMax, 0.0f),
                                     glm::vec4(g.cellSize, 0.0f),
@@ -58,6 +64,10 @@ void packInstances(const Scene &scene, const Grid &grid, const std::vector<uint3
              affineRow(toObject, toObjectOffset, 2), affineRow(toWorld, i.translation, 0),
              affineRow(toWorld, i.translation, 1), affineRow(toWorld, i.translation, 2),
              glm::vec4(indexAsFloat(i.prototype, "prototypes"), material, 0.0f, 0.0f)});
+    }
+    if (!grid.meshGrids.empty()) {
+        packed.cellStart = cellStart;
+        packed.cellPrimitives = cellPrimitives;
     }
 }
 
@@ -110,6 +120,13 @@ PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles, 
     for (const Material &m : scene.materials)
         needShading =
             needShading || ((m.texture != kNoTexture || m.hasSurfaceMaps()) && anyTriangles);
+    // Reserved: grown by doubling, a 1M-triangle array would fault in twice its 48 MB.
+    size_t triangleCount = 0;
+    for (const std::vector<Triangle> *list : triangleLists)
+        triangleCount += list->size();
+    packed.triangles.reserve(triangleCount);
+    if (needShading)
+        packed.triangleShading.reserve(triangleCount);
     std::vector<uint32_t> firstTriangle; // of each list
     for (const std::vector<Triangle> *list : triangleLists) {
         firstTriangle.push_back(uint32_t(packed.triangles.size()));
@@ -141,7 +158,7 @@ PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles, 
         packed.texels.insert(packed.texels.end(), t.texels.begin(), t.texels.end());
     }
 
-    packed.cellStart = grid.cellStart;
+    packed.cellStart = grid.cellStart; // views; packInstances appends the prototypes' grids
     packed.cellPrimitives = grid.cellPrimitives;
     // The cell triangles are written at upload (writeCellTriangles). The grid's ids are
     // triangle indices here: a scene with triangles only numbers them from 0
@@ -153,20 +170,20 @@ PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles, 
         packCellSpheres(scene, packed);
     packInstances(scene, grid, firstTriangle, packed);
     packed.gridEntries = grid.entries;
-    packed.cellBoxes = grid.cellBoxes;
-    for (size_t c = 0; c < packed.cellBoxes.size(); ++c)
-        packed.cellBoxes[c].w = grid.cellStart[c]; // gpu::cellBoxFirstPrimitive
+    packed.cellBoxes = grid.cellBoxes; // w added by writeCellBoxes
     if (cellTriangles && grid.adaptive()) {
         // The leaves name their cell's record (gpu::cellRecordRow), whose rows must fit the
         // entries' 28 bits; chooseFeatures keeps grids that do not off cell triangles.
         if (cellTriangleRows(grid, true) > kMaxAdaptiveIndex)
             throw Error("adaptive grid's cell records need more than 2^28 rows");
         packed.cellRecords = true;
-        for (uint32_t &entry : packed.gridEntries)
+        packed.ownedGridEntries = grid.entries;
+        for (uint32_t &entry : packed.ownedGridEntries)
             if (gpu::entrySplit(entry) == 0) {
                 uint32_t cell = gpu::entryTarget(entry);
                 entry = gpu::cellRecordRow(cell, grid.cellStart[cell]) << 4;
             }
+        packed.gridEntries = packed.ownedGridEntries;
     }
     h.voxelSize = glm::vec4(grid.voxelSize(), 0.0f);
     h.voxels = glm::uvec4(glm::uvec3(grid.voxelResolution()), grid.shift);
@@ -199,6 +216,21 @@ void writeTriangleRows(const PackedScene &packed, size_t k, glm::uvec4 *rows) {
 }
 
 } // namespace
+
+void writeCellBoxes(const PackedScene &packed, std::span<glm::uvec4> out) {
+    if (out.size() != packed.cellBoxes.size())
+        throw Error("cell box array of " + std::to_string(out.size()) + " rows, not " +
+                    std::to_string(packed.cellBoxes.size()));
+    // In parallel, as the cell triangles below: the device's fresh memory faults in as it is
+    // first written.
+    constexpr size_t kBlock = 1 << 16;
+    parallelFor((out.size() + kBlock - 1) / kBlock, [&](size_t block) {
+        for (size_t c = block * kBlock; c < std::min(out.size(), (block + 1) * kBlock); ++c) {
+            out[c] = packed.cellBoxes[c];
+            out[c].w = packed.cellStart[c]; // gpu::cellBoxFirstPrimitive
+        }
+    });
+}
 
 void writeCellTriangles(const PackedScene &packed, std::span<glm::uvec4> out) {
     if (out.size() != cellTriangleRows(packed))

@@ -21,8 +21,13 @@ struct PackedScene {
     std::vector<gpu::GpuLight> lights;
     std::vector<gpu::GpuTexture> textures;
     std::vector<glm::vec4> texels;
-    std::vector<uint32_t> cellStart;
-    std::vector<uint32_t> cellPrimitives;
+    // The grid's arrays are read where the grid holds them, not copied (73 of the ~800 MB a
+    // warm 1M-triangle render faults in), unless the packing changes them: the prototypes'
+    // grids appended, the leaves naming cell records. Then they view the owned vectors below.
+    // So a PackedScene refers to its grid, which must outlive it (packScene refuses a
+    // temporary grid).
+    std::span<const uint32_t> cellStart;
+    std::span<const uint32_t> cellPrimitives;
     // With cellTriangles: each cell entry's triangle (gpu::GpuCellTriangle, 48 bytes), in list
     // order; on an adaptive grid, each cell's record: its box row, then its triangles
     // (cellRecords; gpu::cellRecordRow). Not held here: writeCellTriangles writes it straight
@@ -35,10 +40,21 @@ struct PackedScene {
     std::vector<glm::vec4> cellSpheres; // with cellSpheres only: each entry's centre and radius
     // Adaptive grid only. With cellRecords the leaves name cell records, not cells, and the
     // boxes are written into the records.
-    std::vector<uint32_t> gridEntries;
-    std::vector<glm::uvec4> cellBoxes;
+    std::span<const uint32_t> gridEntries;
+    // The grid's boxes as built: the device's array also holds each cell's first primitive in
+    // w (gpu::cellBoxFirstPrimitive), which writeCellBoxes adds as it writes them.
+    std::span<const glm::uvec4> cellBoxes;
     std::vector<gpu::GpuInstance> instances;
     std::vector<gpu::GpuMeshGrid> meshGrids; // one per prototype
+    std::vector<uint32_t> ownedCellStart, ownedCellPrimitives, ownedGridEntries;
+
+    PackedScene() = default;
+    // Moved, the owned vectors keep their storage and the views stay valid; a copy's views
+    // would point into the original.
+    PackedScene(PackedScene &&) = default;
+    PackedScene &operator=(PackedScene &&) = default;
+    PackedScene(const PackedScene &) = delete;
+    PackedScene &operator=(const PackedScene &) = delete;
 };
 
 // The triangle array holds the scene's triangles, then each prototype's; the cell arrays the
@@ -49,6 +65,10 @@ struct PackedScene {
 // each cell entry's triangle is also stored in list order; likewise with cellSpheres.
 PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles = false,
                       bool cellSpheres = false);
+// The packed scene views the grid's arrays: a grid that would be gone at the end of the
+// statement is refused at compile time.
+PackedScene packScene(const Scene &scene, Grid &&grid, bool cellTriangles = false,
+                      bool cellSpheres = false) = delete;
 
 // Rows (16 bytes) of the cell triangle array: three per cell entry with cellTriangles, and one
 // per cell more with cellRecords; else none.
@@ -58,5 +78,8 @@ uint64_t cellTriangleRows(const PackedScene &packed);
 // packed.triangles and packed.cellPrimitives (and packed.cellBoxes for the records). Throws
 // prism::Error for any other size.
 void writeCellTriangles(const PackedScene &packed, std::span<glm::uvec4> out);
+// Writes the device's cell box array, packed.cellBoxes with each cell's first primitive
+// (packed.cellStart) in w, into `out` (packed.cellBoxes.size() rows; prism::Error otherwise).
+void writeCellBoxes(const PackedScene &packed, std::span<glm::uvec4> out);
 
 } // namespace prism

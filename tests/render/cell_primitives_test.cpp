@@ -87,7 +87,8 @@ TEST(CellTriangles, AreTheListedTrianglesInListOrder) {
     EXPECT_EQ(cellTriangleRows(grid, false), 0u);
     Scene withSphere = scene;
     withSphere.spheres.push_back(Sphere{{0.0, 3.0, 0.0}, 0.5f, 0});
-    EXPECT_THROW(packScene(withSphere, buildGrid(withSphere), true), Error);
+    Grid withSphereGrid = buildGrid(withSphere);
+    EXPECT_THROW(packScene(withSphere, withSphereGrid, true), Error);
 }
 
 // On an adaptive grid: every cell's record (its box row, then its triangles), at the row that
@@ -184,11 +185,12 @@ TEST(CellSpheres, AreTheListedSpheresInListOrder) {
             EXPECT_EQ(packed.cellSpheres[k], packed.spheres[grid.cellPrimitives[k]].centerRadius);
         EXPECT_TRUE(packScene(scene, grid).cellSpheres.empty());
     }
-    EXPECT_GT(
-        packScene(scene, buildGrid(scene, parseGridOption("6")), false, true).cellSpheres.size(),
-        scene.spheres.size())
+    Grid six = buildGrid(scene, parseGridOption("6"));
+    EXPECT_GT(packScene(scene, six, false, true).cellSpheres.size(), scene.spheres.size())
         << "some listed twice";
-    EXPECT_THROW(packScene(stabilityScene(), buildGrid(stabilityScene()), false, true), Error);
+    Scene stability = stabilityScene();
+    Grid stabilityGrid = buildGrid(stability);
+    EXPECT_THROW(packScene(stability, stabilityGrid, false, true), Error);
 }
 
 TEST(CellSpheres, ChosenOnlyWhereTheCellsListSpheresAndTheyFit) {

@@ -1,7 +1,9 @@
 // The host's packing of the scene into std430 arrays (no device needed).
+#include <algorithm>
 #include <bit>
 #include <limits>
 #include <map>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -76,9 +78,10 @@ TEST(ScenePacking, CarriesEveryArrayAndIndex) {
 
 TEST(ScenePacking, ShadingArrayOnlyWhereTheTracerReadsIt) {
     Scene scene = stabilityScene(); // no normals, UVs or textures
-    EXPECT_TRUE(packScene(scene, buildGrid(scene, {})).triangleShading.empty());
+    Grid grid = buildGrid(scene, {});
+    EXPECT_TRUE(packScene(scene, grid).triangleShading.empty());
     scene.triangles[3].hasUVs = true;
-    PackedScene packed = packScene(scene, buildGrid(scene, {}));
+    PackedScene packed = packScene(scene, grid);
     ASSERT_EQ(packed.triangleShading.size(), scene.triangles.size());
     EXPECT_TRUE(gpu::shadingHasUVs(packed.triangleShading[3]));
     EXPECT_FALSE(gpu::shadingHasNormals(packed.triangleShading[3]));
@@ -95,7 +98,8 @@ TEST(ScenePacking, PrimitiveIdRangesFollowTheKinds) {
     EXPECT_EQ(d.kind, gpu::kKindTriangle);
     EXPECT_EQ(d.index, 2u);
     EXPECT_EQ(ids.decode(2).kind, gpu::kKindSphere);
-    EXPECT_EQ(packScene(scene, buildGrid(scene, {})).header.idEnd, ids.end);
+    Grid grid = buildGrid(scene, {});
+    EXPECT_EQ(packScene(scene, grid).header.idEnd, ids.end);
 }
 
 // The adaptive grid's cell boxes go up with each cell's first primitive-list entry in w, where
@@ -106,11 +110,44 @@ TEST(ScenePacking, AdaptiveCellBoxesCarryTheirFirstPrimitive) {
     ASSERT_TRUE(grid.adaptive());
     PackedScene packed = packScene(scene, grid);
     ASSERT_EQ(packed.cellBoxes.size(), grid.cellBoxes.size());
+    std::vector<glm::uvec4> boxes(grid.cellBoxes.size());
+    writeCellBoxes(packed, boxes);
     for (size_t c = 0; c < grid.cellBoxes.size(); ++c) {
-        EXPECT_EQ(gpu::cellBoxFirstPrimitive(packed.cellBoxes[c]), grid.cellStart[c]);
-        EXPECT_EQ(gpu::cellBoxMin(packed.cellBoxes[c]), gpu::cellBoxMin(grid.cellBoxes[c]));
-        EXPECT_EQ(gpu::cellBoxMax(packed.cellBoxes[c]), gpu::cellBoxMax(grid.cellBoxes[c]));
+        EXPECT_EQ(gpu::cellBoxFirstPrimitive(boxes[c]), grid.cellStart[c]);
+        EXPECT_EQ(gpu::cellBoxMin(boxes[c]), gpu::cellBoxMin(grid.cellBoxes[c]));
+        EXPECT_EQ(gpu::cellBoxMax(boxes[c]), gpu::cellBoxMax(grid.cellBoxes[c]));
     }
+    std::vector<glm::uvec4> tooFew(grid.cellBoxes.size() - 1);
+    EXPECT_THROW(writeCellBoxes(packed, tooFew), Error);
+}
+
+// The grid's arrays are viewed where the packing leaves them as they are (no copy), and
+// copied where it changes them: the prototypes' grids appended after the scene grid's.
+TEST(ScenePacking, GridArraysViewedUnlessChanged) {
+    Scene scene = stabilityScene();
+    Grid grid = buildGrid(scene, parseGridOption("adaptive"));
+    PackedScene packed = packScene(scene, grid);
+    EXPECT_EQ(packed.cellStart.data(), grid.cellStart.data());
+    EXPECT_EQ(packed.cellPrimitives.data(), grid.cellPrimitives.data());
+    EXPECT_EQ(packed.gridEntries.data(), grid.entries.data());
+    EXPECT_EQ(packed.cellBoxes.data(), grid.cellBoxes.data());
+    // Moved, the packed scene still views the same arrays.
+    PackedScene moved = std::move(packed);
+    EXPECT_EQ(moved.cellStart.data(), grid.cellStart.data());
+
+    Scene withInstance = scene;
+    withInstance.prototypes.push_back(MeshPrototype{"copy", scene.triangles});
+    withInstance.instances.push_back(Instance{});
+    Grid instanced = buildGrid(withInstance, {});
+    PackedScene appended = packScene(withInstance, instanced);
+    ASSERT_EQ(appended.cellStart.size(),
+              instanced.cellStart.size() + instanced.meshGrids[0].cellStart.size());
+    EXPECT_EQ(appended.cellStart.data(), appended.ownedCellStart.data());
+    EXPECT_TRUE(std::equal(instanced.cellStart.begin(), instanced.cellStart.end(),
+                           appended.cellStart.begin()));
+    PackedScene appendedMoved = std::move(appended);
+    EXPECT_EQ(appendedMoved.cellStart.data(), appendedMoved.ownedCellStart.data());
+    EXPECT_EQ(appendedMoved.cellPrimitives.data(), appendedMoved.ownedCellPrimitives.data());
 }
 
 TEST(TracerFeatures, FollowTheScene) {
