@@ -173,7 +173,7 @@ def chart(rows, path: Path) -> None:
     import matplotlib.pyplot as plt
     shown = ["load", "build", "context", "tracer", "compile", "frames", "write"]
     colours = ["#4c72b0", "#dd8452", "#8172b3", "#c44e52", "#937860", "#55a868", "#64b5cd"]
-    fig, ax = plt.subplots(figsize=(10, 4.8), dpi=110)
+    fig, ax = plt.subplots(figsize=(11.5, 4.8), dpi=110)
     labels = [f"{r['kind']}\n{r['triangles'] / 1e6:.2g}M" for r in rows]
     x = range(len(rows))
     bottom = [0.0] * len(rows)
@@ -195,7 +195,8 @@ def chart(rows, path: Path) -> None:
     ax.set_ylabel("seconds, command to image file")
     ax.set_title("First image of big meshes, phase by phase "
                  f"({rows[0]['device'] if rows else ''}, 512x384, depth 1)")
-    ax.legend(fontsize=8, ncol=2, loc="upper left")
+    # Beside the bars, not over the tallest.
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     ax.grid(axis="y", alpha=0.3)
     fig.tight_layout()
     fig.savefig(path)
