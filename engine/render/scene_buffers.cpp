@@ -124,6 +124,23 @@ constexpr ArraySource kCellTriangles{
             p, std::span(reinterpret_cast<glm::uvec4 *>(to), size_t(cellTriangleRows(p))));
     }};
 
+// The triangles and their shading records, written from the scene's triangles.
+constexpr ArraySource kTriangles{
+    [](const PackedScene &p) { return p.triangleCount * sizeof(gpu::GpuTriangle); },
+    [](const PackedScene &p, std::byte *to) {
+        writeTriangles(
+            p, std::span(reinterpret_cast<gpu::GpuTriangle *>(to), size_t(p.triangleCount)));
+    }};
+constexpr ArraySource kTriangleShading{
+    [](const PackedScene &p) {
+        return p.triangleShading ? p.triangleCount * sizeof(gpu::GpuTriangleShading) : 0;
+    },
+    [](const PackedScene &p, std::byte *to) {
+        if (p.triangleShading)
+            writeTriangleShading(p, std::span(reinterpret_cast<gpu::GpuTriangleShading *>(to),
+                                              size_t(p.triangleCount)));
+    }};
+
 // The cell boxes, each with its first primitive (writeCellBoxes), none where the cell records
 // hold them.
 constexpr ArraySource kCellBoxes{
@@ -164,10 +181,9 @@ const ArrayBinding kArrays[] = {
      kVec4Texels},
     {&B::planes, fromPacked<&P::planes>(), "plane", kBindingPlanes, kBindingPlaneTexels,
      kVec4Texels},
-    {&B::triangles, fromPacked<&P::triangles>(), "triangle", kBindingTriangles,
-     kBindingTriangleTexels, kVec4Texels},
-    {&B::triangleShading, fromPacked<&P::triangleShading>(), "triangle shading",
-     kBindingTriangleShading, kBindingTriangleShadingTexels, kVec4Texels},
+    {&B::triangles, kTriangles, "triangle", kBindingTriangles, kBindingTriangleTexels, kVec4Texels},
+    {&B::triangleShading, kTriangleShading, "triangle shading", kBindingTriangleShading,
+     kBindingTriangleShadingTexels, kVec4Texels},
     {&B::materials, fromPacked<&P::materials>(), "material", kBindingMaterials,
      kBindingMaterialTexels, kVec4Texels},
     {&B::lights, fromPacked<&P::lights>(), "light", kBindingLights, kBindingLightTexels,

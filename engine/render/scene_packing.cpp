@@ -108,39 +108,25 @@ PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles, 
 
     // The tracer reads shading data for every triangle hit where the scene has vertex normals,
     // textures or normal/bump maps (tracer_features.h): then every triangle has its record.
-    std::vector<const std::vector<Triangle> *> triangleLists = {&scene.triangles};
+    packed.triangleLists.push_back(scene.triangles);
     for (const MeshPrototype &m : scene.prototypes)
-        triangleLists.push_back(&m.triangles);
+        packed.triangleLists.push_back(m.triangles);
     bool needShading = false, anyTriangles = false;
-    for (const std::vector<Triangle> *list : triangleLists)
-        for (const Triangle &t : *list) {
+    std::vector<uint32_t> firstTriangle; // of each list
+    for (std::span<const Triangle> list : packed.triangleLists) {
+        firstTriangle.push_back(uint32_t(packed.triangleCount));
+        packed.triangleCount += list.size();
+        for (const Triangle &t : list) {
             needShading = needShading || t.hasNormals || t.hasUVs;
             anyTriangles = true;
+            (void)indexAsFloat(t.material); // checked here, written as a float lane later
         }
+    }
     for (const Material &m : scene.materials)
         needShading =
             needShading || ((m.texture != kNoTexture || m.hasSurfaceMaps()) && anyTriangles);
-    // Reserved: grown by doubling, a 1M-triangle array would fault in twice its 48 MB.
-    size_t triangleCount = 0;
-    for (const std::vector<Triangle> *list : triangleLists)
-        triangleCount += list->size();
-    packed.triangles.reserve(triangleCount);
-    if (needShading)
-        packed.triangleShading.reserve(triangleCount);
-    std::vector<uint32_t> firstTriangle; // of each list
-    for (const std::vector<Triangle> *list : triangleLists) {
-        firstTriangle.push_back(uint32_t(packed.triangles.size()));
-        for (const Triangle &t : *list) {
-            packed.triangles.push_back({glm::vec4(t.p[0], indexAsFloat(t.material)),
-                                        glm::vec4(t.p[1], 0.0f), glm::vec4(t.p[2], 0.0f)});
-            if (needShading)
-                packed.triangleShading.push_back(
-                    {glm::vec4(t.n[0], t.hasNormals ? 1.0f : 0.0f),
-                     glm::vec4(t.n[1], t.hasUVs ? 1.0f : 0.0f), glm::vec4(t.n[2], 0.0f),
-                     glm::vec4(t.uv[0], t.uv[1]), glm::vec4(t.uv[2], 0.0f, 0.0f)});
-        }
-    }
-    if (packed.triangles.size() >= (uint64_t(1) << 29))
+    packed.triangleShading = needShading;
+    if (packed.triangleCount >= (uint64_t(1) << 29))
         throw Error("scene has more than 2^29 triangles, prototypes' included"); // resume.glsl
 
     for (const Material &m : scene.materials)
@@ -205,10 +191,39 @@ uint64_t cellTriangleRows(const PackedScene &packed) {
 
 namespace {
 
+gpu::GpuTriangle toGpu(const Triangle &t) {
+    return {glm::vec4(t.p[0], float(t.material)), glm::vec4(t.p[1], 0.0f), glm::vec4(t.p[2], 0.0f)};
+}
+
+gpu::GpuTriangleShading shadingOf(const Triangle &t) {
+    return {glm::vec4(t.n[0], t.hasNormals ? 1.0f : 0.0f),
+            glm::vec4(t.n[1], t.hasUVs ? 1.0f : 0.0f), glm::vec4(t.n[2], 0.0f),
+            glm::vec4(t.uv[0], t.uv[1]), glm::vec4(t.uv[2], 0.0f, 0.0f)};
+}
+
+// Each list's records into `out` in order, by blocks on every core: a 1M-triangle array is the
+// device's fresh memory, faulted in as it is first written.
+template <typename Record, typename Convert>
+void writeRecords(const PackedScene &packed, std::span<Record> out, Convert convert,
+                  const char *what) {
+    if (out.size() != packed.triangleCount)
+        throw Error(std::string(what) + " array of " + std::to_string(out.size()) +
+                    " records, not " + std::to_string(packed.triangleCount));
+    constexpr size_t kBlock = 1 << 15;
+    size_t first = 0;
+    for (std::span<const Triangle> list : packed.triangleLists) {
+        parallelFor((list.size() + kBlock - 1) / kBlock, [&](size_t block) {
+            for (size_t i = block * kBlock; i < std::min(list.size(), (block + 1) * kBlock); ++i)
+                out[first + i] = convert(list[i]);
+        });
+        first += list.size();
+    }
+}
+
 // Cell entry k's triangle as three rows from `rows` on (gpu::GpuCellTriangle).
 void writeTriangleRows(const PackedScene &packed, size_t k, glm::uvec4 *rows) {
     uint32_t id = packed.cellPrimitives[k];
-    const gpu::GpuTriangle &t = packed.triangles.at(id);
+    gpu::GpuTriangle t = packedTriangle(packed, id);
     rows[0] = glm::floatBitsToUint(glm::vec4(glm::vec3(t.v0), 0.0f));
     rows[0].w = id;
     rows[1] = glm::floatBitsToUint(glm::vec4(glm::vec3(t.v1), 0.0f));
@@ -216,6 +231,26 @@ void writeTriangleRows(const PackedScene &packed, size_t k, glm::uvec4 *rows) {
 }
 
 } // namespace
+
+gpu::GpuTriangle packedTriangle(const PackedScene &packed, uint64_t i) {
+    for (std::span<const Triangle> list : packed.triangleLists) {
+        if (i < list.size())
+            return toGpu(list[i]);
+        i -= list.size();
+    }
+    throw Error("packed triangle past the " + std::to_string(packed.triangleCount) + " there are");
+}
+
+void writeTriangles(const PackedScene &packed, std::span<gpu::GpuTriangle> out) {
+    writeRecords(packed, out, toGpu, "triangle");
+}
+
+void writeTriangleShading(const PackedScene &packed, std::span<gpu::GpuTriangleShading> out) {
+    if (!packed.triangleShading && !out.empty())
+        throw Error("triangle shading array written for a scene that needs none");
+    if (packed.triangleShading)
+        writeRecords(packed, out, shadingOf, "triangle shading");
+}
 
 void writeCellBoxes(const PackedScene &packed, std::span<glm::uvec4> out) {
     if (out.size() != packed.cellBoxes.size())

@@ -15,8 +15,12 @@ struct PackedScene {
     gpu::GpuSceneHeader header{};
     std::vector<gpu::GpuSphere> spheres;
     std::vector<gpu::GpuPlane> planes;
-    std::vector<gpu::GpuTriangle> triangles;
-    std::vector<gpu::GpuTriangleShading> triangleShading; // empty when no triangle needs it
+    // The triangles are not copied here either: writeTriangles and writeTriangleShading write
+    // their records straight into the device's arrays from the scene's triangles (48 MB at 1M,
+    // written once instead of packed and copied). The scene's list, then each prototype's.
+    std::vector<std::span<const Triangle>> triangleLists;
+    uint64_t triangleCount = 0;
+    bool triangleShading = false; // every triangle has its shading record (normals, UVs, maps)
     std::vector<gpu::GpuMaterial> materials;
     std::vector<gpu::GpuLight> lights;
     std::vector<gpu::GpuTexture> textures;
@@ -65,17 +69,27 @@ struct PackedScene {
 // each cell entry's triangle is also stored in list order; likewise with cellSpheres.
 PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles = false,
                       bool cellSpheres = false);
-// The packed scene views the grid's arrays: a grid that would be gone at the end of the
-// statement is refused at compile time.
+// The packed scene views the scene's triangles and the grid's arrays: a scene or grid that
+// would be gone at the end of the statement is refused at compile time.
 PackedScene packScene(const Scene &scene, Grid &&grid, bool cellTriangles = false,
                       bool cellSpheres = false) = delete;
+PackedScene packScene(Scene &&scene, const Grid &grid, bool cellTriangles = false,
+                      bool cellSpheres = false) = delete;
+
+// Triangle i of the packed triangle array (the scene's, then each prototype's) as the device
+// holds it; prism::Error past the end.
+gpu::GpuTriangle packedTriangle(const PackedScene &packed, uint64_t i);
+// Write the triangle array (packed.triangleCount records) and, where packed.triangleShading,
+// the shading array (as many) into `out`; prism::Error for any other size.
+void writeTriangles(const PackedScene &packed, std::span<gpu::GpuTriangle> out);
+void writeTriangleShading(const PackedScene &packed, std::span<gpu::GpuTriangleShading> out);
 
 // Rows (16 bytes) of the cell triangle array: three per cell entry with cellTriangles, and one
 // per cell more with cellRecords; else none.
 uint64_t cellTriangleRows(const Grid &grid, bool cellTriangles);
 uint64_t cellTriangleRows(const PackedScene &packed);
 // Writes the cell triangle array, cellTriangleRows(packed) rows, into `out`, from
-// packed.triangles and packed.cellPrimitives (and packed.cellBoxes for the records). Throws
+// the packed triangles and packed.cellPrimitives (and packed.cellBoxes for the records). Throws
 // prism::Error for any other size.
 void writeCellTriangles(const PackedScene &packed, std::span<glm::uvec4> out);
 // Writes the device's cell box array, packed.cellBoxes with each cell's first primitive

@@ -57,7 +57,7 @@ void expectCellTriangle(const Scene &scene, const Grid &grid, const PackedScene 
     ASSERT_LE(row + 3, rows.size());
     uint32_t id = grid.cellPrimitives[k];
     ASSERT_EQ(gpu::cellTriangleIndex(rows[row]), id);
-    const gpu::GpuTriangle &t = packed.triangles[id];
+    gpu::GpuTriangle t = packedTriangle(packed, id);
     for (int axis = 0; axis < 3; ++axis) {
         EXPECT_EQ(rows[row][axis], std::bit_cast<uint32_t>(t.v0[axis]));
         EXPECT_EQ(rows[row + 1][axis], std::bit_cast<uint32_t>(t.v1[axis]));

@@ -285,8 +285,8 @@ TEST(InstancePacking, AThousandPlacementsStoreTheMeshOnce) {
     Grid grid = buildGrid(scene), gridOne = buildGrid(one);
     PackedScene packed = packScene(scene, grid), packedOne = packScene(one, gridOne);
     size_t meshTriangles = scene.prototypes[0].triangles.size();
-    EXPECT_EQ(packed.triangles.size(), scene.triangles.size() + meshTriangles);
-    EXPECT_EQ(packed.triangles.size(), packedOne.triangles.size());
+    EXPECT_EQ(packed.triangleCount, scene.triangles.size() + meshTriangles);
+    EXPECT_EQ(packed.triangleCount, packedOne.triangleCount);
     EXPECT_EQ(packed.instances.size(), 1000u);
     EXPECT_EQ(packed.meshGrids.size(), 1u);
     EXPECT_EQ(sizeof(gpu::GpuInstance), 112u);

@@ -1,6 +1,7 @@
 // The host's packing of the scene into std430 arrays (no device needed).
 #include <algorithm>
 #include <bit>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <vector>
@@ -38,7 +39,7 @@ TEST(ScenePacking, CarriesEveryArrayAndIndex) {
     EXPECT_EQ(packed.planes[0].normalOffset, glm::vec4(0, 1, 0, 0));
     EXPECT_EQ(gpu::planeMaterial(packed.planes[0]), 1u); // "floor"
     EXPECT_EQ(gpu::sphereMaterial(packed.spheres[1]), 3u);
-    EXPECT_EQ(gpu::triangleMaterial(packed.triangles[0]), 5u);
+    EXPECT_EQ(gpu::triangleMaterial(packedTriangle(packed, 0)), 5u);
     const Material &textured = scene.materials[2];
     const gpu::GpuMaterial &m = packed.materials[2];
     EXPECT_EQ(gpu::materialColor(m), textured.color);
@@ -68,9 +69,11 @@ TEST(ScenePacking, CarriesEveryArrayAndIndex) {
     EXPECT_EQ(gpu::textureWidth(packed.textures[1]), 2u);
     EXPECT_EQ(gpu::textureHeight(packed.textures[1]), 1u);
     // A textured material makes the tracer read shading data for every triangle hit.
-    ASSERT_EQ(packed.triangleShading.size(), scene.triangles.size());
-    EXPECT_FALSE(gpu::shadingHasNormals(packed.triangleShading[0]));
-    EXPECT_FALSE(gpu::shadingHasUVs(packed.triangleShading[0]));
+    ASSERT_TRUE(packed.triangleShading);
+    std::vector<gpu::GpuTriangleShading> shading(scene.triangles.size());
+    writeTriangleShading(packed, shading);
+    EXPECT_FALSE(gpu::shadingHasNormals(shading[0]));
+    EXPECT_FALSE(gpu::shadingHasUVs(shading[0]));
     EXPECT_EQ(packed.texels.size(), 4u);
     EXPECT_EQ(packed.cellStart.size(), size_t(packed.header.gridRes.w) + 1);
     EXPECT_EQ(packed.cellStart.back(), packed.cellPrimitives.size());
@@ -79,12 +82,18 @@ TEST(ScenePacking, CarriesEveryArrayAndIndex) {
 TEST(ScenePacking, ShadingArrayOnlyWhereTheTracerReadsIt) {
     Scene scene = stabilityScene(); // no normals, UVs or textures
     Grid grid = buildGrid(scene, {});
-    EXPECT_TRUE(packScene(scene, grid).triangleShading.empty());
+    EXPECT_FALSE(packScene(scene, grid).triangleShading);
+    std::vector<gpu::GpuTriangleShading> none;
+    writeTriangleShading(packScene(scene, grid), none); // nothing to write, and no error
     scene.triangles[3].hasUVs = true;
     PackedScene packed = packScene(scene, grid);
-    ASSERT_EQ(packed.triangleShading.size(), scene.triangles.size());
-    EXPECT_TRUE(gpu::shadingHasUVs(packed.triangleShading[3]));
-    EXPECT_FALSE(gpu::shadingHasNormals(packed.triangleShading[3]));
+    ASSERT_TRUE(packed.triangleShading);
+    std::vector<gpu::GpuTriangleShading> shading(scene.triangles.size());
+    writeTriangleShading(packed, shading);
+    EXPECT_TRUE(gpu::shadingHasUVs(shading[3]));
+    EXPECT_FALSE(gpu::shadingHasNormals(shading[3]));
+    std::vector<gpu::GpuTriangleShading> tooFew(scene.triangles.size() - 1);
+    EXPECT_THROW(writeTriangleShading(packed, tooFew), Error);
 }
 
 // Grid ids: spheres first, then triangles; the header carries the ranges the tracer decodes.
@@ -119,6 +128,33 @@ TEST(ScenePacking, AdaptiveCellBoxesCarryTheirFirstPrimitive) {
     }
     std::vector<glm::uvec4> tooFew(grid.cellBoxes.size() - 1);
     EXPECT_THROW(writeCellBoxes(packed, tooFew), Error);
+}
+
+// The triangle array is the scene's triangles, then each prototype's, written from the scene
+// as the device reads them: float positions, the material in the first vertex's w.
+TEST(ScenePacking, TrianglesWrittenFromTheSceneInListOrder) {
+    Scene scene = stabilityScene();
+    scene.prototypes.push_back(MeshPrototype{"copy", scene.triangles});
+    scene.prototypes[0].triangles[1].material = 2;
+    scene.instances.push_back(Instance{});
+    Grid grid = buildGrid(scene, {});
+    PackedScene packed = packScene(scene, grid);
+    size_t own = scene.triangles.size(), total = own + scene.prototypes[0].triangles.size();
+    ASSERT_EQ(packed.triangleCount, total);
+    std::vector<gpu::GpuTriangle> triangles(total);
+    writeTriangles(packed, triangles);
+    for (size_t i = 0; i < total; ++i) {
+        const Triangle &t = i < own ? scene.triangles[i] : scene.prototypes[0].triangles[i - own];
+        EXPECT_EQ(glm::vec3(triangles[i].v0), glm::vec3(t.p[0])) << i;
+        EXPECT_EQ(glm::vec3(triangles[i].v1), glm::vec3(t.p[1])) << i;
+        EXPECT_EQ(glm::vec3(triangles[i].v2), glm::vec3(t.p[2])) << i;
+        EXPECT_EQ(gpu::triangleMaterial(triangles[i]), t.material) << i;
+        gpu::GpuTriangle one = packedTriangle(packed, i);
+        EXPECT_EQ(std::memcmp(&triangles[i], &one, sizeof one), 0) << i;
+    }
+    EXPECT_THROW(packedTriangle(packed, total), Error);
+    std::vector<gpu::GpuTriangle> tooMany(total + 1);
+    EXPECT_THROW(writeTriangles(packed, tooMany), Error);
 }
 
 // The grid's arrays are viewed where the packing leaves them as they are (no copy), and
