@@ -80,6 +80,11 @@ Grid unpackFrom(BlobReader &in, int level) {
 } // namespace
 
 std::string gridCacheKey(const Scene &scene, const GridOptions &options) {
+    return gridCacheKey(scene, options, meshGridsKey(scene));
+}
+
+std::string gridCacheKey(const Scene &scene, const GridOptions &options,
+                         const std::string &meshKey) {
     ContentHash hash;
     hash.text("prism grid").text(PRISM_GRID_SOURCE_DIGEST).value(kGridCacheFormat);
     hash.value(int32_t(options.mode)).value(options.resolution).value(options.density);
@@ -90,9 +95,7 @@ std::string gridCacheKey(const Scene &scene, const GridOptions &options) {
     for (const Sphere &s : scene.spheres)
         hash.value(s.center).value(s.radius);
     addTrianglePositions(hash, scene.triangles);
-    hash.value(uint64_t(scene.prototypes.size()));
-    for (const MeshPrototype &p : scene.prototypes)
-        addTrianglePositions(hash, p.triangles);
+    hash.text(meshKey); // the prototypes' positions, digested once (meshGridsKey)
     hash.value(uint64_t(scene.instances.size()));
     for (const Instance &i : scene.instances)
         hash.value(i.prototype).value(i.scale).value(i.rotation).value(i.translation);
@@ -108,6 +111,8 @@ std::string gridCacheKey(const Scene &scene, const GridOptions &options) {
 }
 
 std::string meshGridsKey(const Scene &scene) {
+    if (scene.prototypes.empty())
+        return {};
     ContentHash hash;
     hash.text("prism mesh grids").text(PRISM_GRID_SOURCE_DIGEST).value(kGridCacheFormat);
     hash.value(uint64_t(scene.prototypes.size()));

@@ -17,7 +17,7 @@ namespace prism {
 class DiskCache;
 
 // A digest of what the prototypes' mesh grids are built from (their triangles' positions, and
-// the builder's code): equal keys, the same mesh grids (Grid::meshGrids).
+// the builder's code): equal keys, the same mesh grids (Grid::meshGrids). "" without prototypes.
 std::string meshGridsKey(const Scene &scene);
 
 constexpr uint32_t kGridCacheFormat = 2;
@@ -36,6 +36,10 @@ struct GridCachePolicy {
 };
 
 std::string gridCacheKey(const Scene &scene, const GridOptions &options);
+// The same, with the scene's meshGridsKey given: a caller that needs both (prism-view's reload)
+// reads the prototypes' triangles once.
+std::string gridCacheKey(const Scene &scene, const GridOptions &options,
+                         const std::string &meshKey);
 std::string packGrid(const Grid &grid);
 Grid unpackGrid(std::string_view bytes); // throws BlobFormatError on a damaged entry
 

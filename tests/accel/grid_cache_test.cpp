@@ -132,6 +132,12 @@ TEST(GridCache, MeshGridsKeyAndGridOverKeptMeshGrids) {
     edited = scene;
     edited.prototypes.push_back(edited.prototypes[0]);
     EXPECT_NE(meshGridsKey(edited), key);
+    EXPECT_EQ(meshGridsKey(Scene{}), "") << "no prototypes, no mesh key";
+    // The grid's key holds the mesh key: given or digested, the same; another, another key.
+    EXPECT_EQ(gridCacheKey(scene, GridOptions{}, key), gridCacheKey(scene, GridOptions{}));
+    EXPECT_NE(gridCacheKey(scene, GridOptions{}, meshGridsKey(edited)),
+              gridCacheKey(scene, GridOptions{}));
+    EXPECT_NE(gridCacheKey(edited, GridOptions{}), gridCacheKey(scene, GridOptions{}));
 
     for (GridOptions::Mode mode :
          {GridOptions::Mode::Auto, GridOptions::Mode::Adaptive, GridOptions::Mode::Regular}) {

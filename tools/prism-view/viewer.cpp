@@ -106,13 +106,10 @@ void Viewer::buildTracer(const Scene &scene) {
     // the grid's keeps the grid: its key is what the build reads (accel/grid_cache.h). One that
     // left the prototypes as they were (instances moved, or the origin: prototypes keep their
     // own space) builds only the instances' level over the mesh grids it has.
-    std::string gridKey = gridCacheKey(scene, gridOptions);
+    // The prototypes' digest is part of the grid's key: read once for both.
+    std::string meshKey = meshGridsKey(scene);
+    std::string gridKey = gridCacheKey(scene, gridOptions, meshKey);
     bool same = tracer_ && gridKey == gridKey_;
-    // Only a changed grid asks after the meshes: their digest reads every prototype triangle
-    // again, and a kept grid's meshes are the ones it has.
-    std::string meshKey = same                       ? meshKey_
-                          : scene.prototypes.empty() ? std::string()
-                                                     : meshGridsKey(scene);
     GridWork work = !tracer_                                  ? GridWork::Built
                     : same                                    ? GridWork::Kept
                     : !meshKey.empty() && meshKey == meshKey_ ? GridWork::SceneLevel
