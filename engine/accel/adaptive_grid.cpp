@@ -267,18 +267,14 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
     std::vector<VoxelBounds> voxels(primitives.count());
     std::vector<uint32_t> ids(primitives.count());
     glm::dvec3 origin(grid.boundsMin), voxel(grid.voxelSize());
-    constexpr size_t kBlock = 4096;
-    parallelFor((bounds.size() + kBlock - 1) / kBlock, [&](size_t block) {
-        for (size_t id = block * kBlock; id < std::min(bounds.size(), (block + 1) * kBlock); ++id) {
-            bounds[id] = primitives.bounds(uint32_t(id));
-            glm::dvec3 lo = (bounds[id].min - origin) / voxel,
-                       hi = (bounds[id].max - origin) / voxel;
-            for (int a = 0; a < 3; ++a) {
-                voxels[id].lo[a] = toFixedVoxels(lo[a], false);
-                voxels[id].hi[a] = toFixedVoxels(hi[a], true);
-            }
-            ids[id] = uint32_t(id);
+    parallelForInBlocks(bounds.size(), 4096, [&](size_t id) {
+        bounds[id] = primitives.bounds(uint32_t(id));
+        glm::dvec3 lo = (bounds[id].min - origin) / voxel, hi = (bounds[id].max - origin) / voxel;
+        for (int a = 0; a < 3; ++a) {
+            voxels[id].lo[a] = toFixedVoxels(lo[a], false);
+            voxels[id].hi[a] = toFixedVoxels(hi[a], true);
         }
+        ids[id] = uint32_t(id);
     });
     PartRanges ranges(grid, top.magnitude);
     PartLists topRefs =

@@ -76,4 +76,13 @@ template <typename Body> void parallelFor(size_t count, Body body) {
         std::rethrow_exception(error);
 }
 
+// body(i) for every i in [0, count), handed out `block` indices at a time: for loops whose
+// bodies are too small to be scheduled one by one (writing a big array, each element its own).
+template <typename Body> void parallelForInBlocks(size_t count, size_t block, Body body) {
+    parallelFor((count + block - 1) / block, [&](size_t b) {
+        for (size_t i = b * block, end = std::min(count, (b + 1) * block); i < end; ++i)
+            body(i);
+    });
+}
+
 } // namespace prism

@@ -209,13 +209,10 @@ void writeRecords(const PackedScene &packed, std::span<Record> out, Convert conv
     if (out.size() != packed.triangleCount)
         throw Error(std::string(what) + " array of " + std::to_string(out.size()) +
                     " records, not " + std::to_string(packed.triangleCount));
-    constexpr size_t kBlock = 1 << 15;
     size_t first = 0;
     for (std::span<const Triangle> list : packed.triangleLists) {
-        parallelFor((list.size() + kBlock - 1) / kBlock, [&](size_t block) {
-            for (size_t i = block * kBlock; i < std::min(list.size(), (block + 1) * kBlock); ++i)
-                out[first + i] = convert(list[i]);
-        });
+        parallelForInBlocks(list.size(), 1 << 15,
+                            [&](size_t i) { out[first + i] = convert(list[i]); });
         first += list.size();
     }
 }
@@ -258,12 +255,9 @@ void writeCellBoxes(const PackedScene &packed, std::span<glm::uvec4> out) {
                     std::to_string(packed.cellBoxes.size()));
     // In parallel, as the cell triangles below: the device's fresh memory faults in as it is
     // first written.
-    constexpr size_t kBlock = 1 << 16;
-    parallelFor((out.size() + kBlock - 1) / kBlock, [&](size_t block) {
-        for (size_t c = block * kBlock; c < std::min(out.size(), (block + 1) * kBlock); ++c) {
-            out[c] = packed.cellBoxes[c];
-            out[c].w = packed.cellStart[c]; // gpu::cellBoxFirstPrimitive
-        }
+    parallelForInBlocks(out.size(), 1 << 16, [&](size_t c) {
+        out[c] = packed.cellBoxes[c];
+        out[c].w = packed.cellStart[c]; // gpu::cellBoxFirstPrimitive
     });
 }
 
@@ -275,24 +269,18 @@ void writeCellTriangles(const PackedScene &packed, std::span<glm::uvec4> out) {
     // device's fresh memory faults in page by page as it is first written.
     constexpr size_t kBlock = 1 << 16;
     if (!packed.cellRecords) {
-        size_t entries = packed.cellPrimitives.size();
-        parallelFor((entries + kBlock - 1) / kBlock, [&](size_t block) {
-            for (size_t k = block * kBlock; k < std::min(entries, (block + 1) * kBlock); ++k)
-                writeTriangleRows(packed, k, &out[3 * k]);
-        });
+        parallelForInBlocks(packed.cellPrimitives.size(), kBlock,
+                            [&](size_t k) { writeTriangleRows(packed, k, &out[3 * k]); });
         return;
     }
-    size_t cells = packed.cellBoxes.size();
-    parallelFor((cells + kBlock - 1) / kBlock, [&](size_t block) {
-        for (size_t c = block * kBlock; c < std::min(cells, (block + 1) * kBlock); ++c) {
-            uint32_t first = packed.cellStart[c], end = packed.cellStart[c + 1];
-            size_t row = gpu::cellRecordRow(uint32_t(c), first);
-            out[row] = packed.cellBoxes[c];
-            out[row].w = end - first; // gpu::cellRecordCount
-            for (uint32_t k = first; k < end; ++k)
-                writeTriangleRows(packed, k,
-                                  &out[gpu::cellRecordTriangleRow(uint32_t(row), k - first)]);
-        }
+    parallelForInBlocks(packed.cellBoxes.size(), kBlock, [&](size_t c) {
+        uint32_t first = packed.cellStart[c], end = packed.cellStart[c + 1];
+        size_t row = gpu::cellRecordRow(uint32_t(c), first);
+        out[row] = packed.cellBoxes[c];
+        out[row].w = end - first; // gpu::cellRecordCount
+        for (uint32_t k = first; k < end; ++k)
+            writeTriangleRows(packed, k,
+                              &out[gpu::cellRecordTriangleRow(uint32_t(row), k - first)]);
     });
 }
 

@@ -41,6 +41,16 @@ TEST(ParallelFor, RunsEachIndexOnce) {
         ASSERT_EQ(r, 1);
 }
 
+// In blocks: every index once, also where the count is not a multiple of the block, or 0.
+TEST(ParallelFor, InBlocksRunsEachIndexOnce) {
+    for (size_t count : {0, 1, 999, 1000, 1001}) {
+        std::vector<std::atomic<int>> runs(count);
+        parallelForInBlocks(count, 100, [&](size_t i) { ++runs.at(i); });
+        for (const std::atomic<int> &r : runs)
+            ASSERT_EQ(r, 1) << count;
+    }
+}
+
 TEST(ParallelFor, RethrowsABodysException) {
     EXPECT_THROW(parallelFor(100,
                              [](size_t i) {
