@@ -189,7 +189,13 @@ void bindScene(py::module_ &m) {
             Timer load;
             Scene loaded = [&] {
                 py::gil_scoped_release released; // big OBJ files take seconds
-                return loadScene(path);
+                // Big OBJ files parsed once, read back after (scene/obj_cache.h).
+                std::optional<DiskCache> store;
+                if (std::filesystem::path dir = DiskCache::defaultDirectory();
+                    cache && !dir.empty())
+                    store.emplace(DiskCacheOptions{dir});
+                ObjCacheUse objCache{store ? &*store : nullptr};
+                return loadScene(path, {}, &objCache);
             }();
             return prepare(std::move(loaded), grid, build, cache, path, load.elapsedMs());
         },

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <future>
 #include <optional>
 #include <string>
 
@@ -39,9 +40,6 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
       features_(
           chooseFeatures(scene, grid, options, context.properties().limits.maxTexelBufferElements)),
       limits_(arrayLimits(context, options)), runner_(context),
-      scene_(uploadScene(
-          context, runner_, packScene(scene, grid, features_.cellTriangles, features_.cellSpheres),
-          limits_, options.stagedUpload ? UploadPath::Staged : UploadPath::InPlaceWhereShared)),
       stats_(context, sizeof(gpu::GpuStats),
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT, // snapshots for the viewer
@@ -52,11 +50,21 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
       walkLog_(context, 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false), timestamps_(context) {
     if (features_.profile > 0 && !context.shaderClockEnabled())
         throw Error("profiling needs a Vulkan context created with the shader clock");
-    extent_ = sceneExtent(scene, grid, options.maxStartBoxes);
     region_ = options.region.empty() ? wholeImage(width, height) : options.region;
     checkPixelBounds(region_, width, height);
+    // The tracer's pipeline compiles on a thread of its own while the scene's arrays are written
+    // and its extent is found: on lavapipe each takes 100-150 ms for a 1M-triangle mesh, one
+    // after the other before (issue 31, docs/benchmarks.md). Should the upload throw, the
+    // future's destructor waits for the compile, whose pipeline then goes with it.
+    std::future<std::unique_ptr<vk::ComputePipeline>> compiled = std::async(
+        std::launch::async, [this] { return compileTracerPipeline(features_, Module::Full); });
+    scene_ = uploadScene(
+        context, runner_, packScene(scene, grid, features_.cellTriangles, features_.cellSpheres),
+        limits_, options.stagedUpload ? UploadPath::Staged : UploadPath::InPlaceWhereShared);
+    extent_ = sceneExtent(scene, grid, options.maxStartBoxes);
     createImages(width, height);
-    createPipeline();
+    pipeline_ = compiled.get();
+    bindTracerPipeline(*pipeline_);
     if (options.cullMissTiles)
         missPipeline_ = createTracerPipeline(features_.backgroundOnly(), Module::BackgroundOnly);
     tileStarts_ = options.cullMissTiles && options.tileStarts;
@@ -148,6 +156,13 @@ void RayTracer::createPipeline() {
 
 std::unique_ptr<vk::ComputePipeline> RayTracer::createTracerPipeline(const TracerFeatures &features,
                                                                      Module module) {
+    std::unique_ptr<vk::ComputePipeline> pipeline = compileTracerPipeline(features, module);
+    bindTracerPipeline(*pipeline);
+    return pipeline;
+}
+
+std::unique_ptr<vk::ComputePipeline>
+RayTracer::compileTracerPipeline(const TracerFeatures &features, Module module) const {
     vk::ComputePipelineDesc desc;
     // The profiling build times background tiles too, with the full module (no kinds).
     if (features.profile > 0)
@@ -164,13 +179,15 @@ std::unique_ptr<vk::ComputePipeline> RayTracer::createTracerPipeline(const Trace
     desc.bindings = traceDescriptorTypes();
     desc.specialization = features.specialization();
     desc.pushConstantBytes = sizeof(gpu::GpuFrameParams);
-    auto pipeline = std::make_unique<vk::ComputePipeline>(context_, desc);
-    bindImages(*pipeline);
-    bindScene(*pipeline, scene_, limits_);
-    pipeline->bindBuffer(gpu::kBindingStats, stats_.handle());
-    pipeline->bindBuffer(gpu::kBindingResumeRecords, resumeRecords_.handle());
-    pipeline->bindBuffer(gpu::kBindingWalkLog, walkLog_.handle());
-    return pipeline;
+    return std::make_unique<vk::ComputePipeline>(context_, desc);
+}
+
+void RayTracer::bindTracerPipeline(vk::ComputePipeline &pipeline) {
+    bindImages(pipeline);
+    bindScene(pipeline, scene_, limits_);
+    pipeline.bindBuffer(gpu::kBindingStats, stats_.handle());
+    pipeline.bindBuffer(gpu::kBindingResumeRecords, resumeRecords_.handle());
+    pipeline.bindBuffer(gpu::kBindingWalkLog, walkLog_.handle());
 }
 
 void RayTracer::bindImages(vk::ComputePipeline &pipeline) {

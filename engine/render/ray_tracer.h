@@ -209,6 +209,11 @@ private:
     enum class Module { Full, PlanesOnly, BackgroundOnly };
     std::unique_ptr<vk::ComputePipeline> createTracerPipeline(const TracerFeatures &features,
                                                               Module module);
+    // createTracerPipeline's two halves: the pipeline alone (it reads no member but the
+    // context, so it may run on another thread), and its bindings.
+    std::unique_ptr<vk::ComputePipeline> compileTracerPipeline(const TracerFeatures &features,
+                                                               Module module) const;
+    void bindTracerPipeline(vk::ComputePipeline &pipeline);
     // Resumable tracing: each sample of each tile dispatched until all its pixels are done.
     void startResuming();
     FrameResult renderResumable(const Camera &camera, uint32_t samplesPerPixel,

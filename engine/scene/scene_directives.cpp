@@ -9,6 +9,7 @@
 #include "scene/directive_values.h"
 #include "scene/mesh_importer.h"
 #include "scene/number_parser.h"
+#include "scene/obj_cache.h"
 #include "scene/obj_loader.h"
 #include "scene/placement.h"
 #include "scene/text_file.h"
@@ -304,8 +305,7 @@ void mesh(SceneBuilder &builder, const DirectiveArgs &args) {
             request.smoothCreaseDegrees = crease;
         }
     }
-    std::string text = readTextFile(request.objPath, "OBJ file");
-    ObjModel model = parseObj(text, displayPath(request.objPath));
+    ObjModel model = loadObjFile(request.objPath, displayPath(request.objPath), builder.objCache);
     builder.scene.warnings.insert(builder.scene.warnings.end(), model.warnings.begin(),
                                   model.warnings.end());
     std::vector<Triangle> prototype;

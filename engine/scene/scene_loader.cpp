@@ -5,13 +5,14 @@
 
 namespace prism {
 
-Scene loadScene(const std::filesystem::path &path, const SceneLimits &limits) {
-    return parseSceneText(readTextFile(path, "scene file"), path, limits);
+Scene loadScene(const std::filesystem::path &path, const SceneLimits &limits,
+                ObjCacheUse *objCache) {
+    return parseSceneText(readTextFile(path, "scene file"), path, limits, objCache);
 }
 
 Scene parseScene(std::string_view text, const std::filesystem::path &virtualPath,
-                 const SceneLimits &limits) {
-    return parseSceneText(text, virtualPath, limits);
+                 const SceneLimits &limits, ObjCacheUse *objCache) {
+    return parseSceneText(text, virtualPath, limits, objCache);
 }
 
 } // namespace prism

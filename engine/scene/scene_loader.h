@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "scene/obj_cache.h"
 #include "scene/scene.h"
 
 namespace prism {
@@ -24,11 +25,15 @@ struct SceneLimits {
 // Reads and parses `path`. Throws prism::FileError ("FILE:LINE: what is wrong") for errors in
 // the scene or the files it names, a scene over `limits` among them, prism::Error when `path`
 // itself cannot be read.
-Scene loadScene(const std::filesystem::path &path, const SceneLimits &limits = {});
+//
+// With `objCache`, OBJ files of a megabyte or more are read back from its cache when they were
+// parsed before, and stored when not (scene/obj_cache.h); it counts both.
+Scene loadScene(const std::filesystem::path &path, const SceneLimits &limits = {},
+                ObjCacheUse *objCache = nullptr);
 
 // Parses scene text as if it had been read from `virtualPath` (used in messages); relative
 // paths in it resolve against virtualPath's directory. Same errors as loadScene.
 Scene parseScene(std::string_view text, const std::filesystem::path &virtualPath,
-                 const SceneLimits &limits = {});
+                 const SceneLimits &limits = {}, ObjCacheUse *objCache = nullptr);
 
 } // namespace prism

@@ -11,9 +11,10 @@ void SceneBuilder::warn(const std::string &message) {
 }
 
 Scene parseSceneText(std::string_view text, const std::filesystem::path &virtualPath,
-                     const SceneLimits &limits) {
+                     const SceneLimits &limits, ObjCacheUse *objCache) {
     SceneBuilder builder;
     builder.limits = limits;
+    builder.objCache = objCache;
     builder.fileName = virtualPath.generic_string();
     builder.baseDir = virtualPath.parent_path();
     builder.scene.materials.push_back(Material{"default"});

@@ -44,8 +44,8 @@ struct SceneBuilder {
     std::unordered_map<std::string, uint32_t> materialByName;
     std::unordered_map<std::string, int> materialLine; // 0 for the built-in `default`
     uint32_t currentMaterial = 0;
-    int cameraLine = 0;                   // 0 until a camera line
-    int environmentLine = 0;              // 0 until an environment line
+    int cameraLine = 0;                         // 0 until a camera line
+    int environmentLine = 0;                    // 0 until an environment line
     int turntableLine = 0, interpolateLine = 0; // 0 until such a line
     // The directive a `key` line animates: "camera" or "place" when the last line other than a
     // key was one, else empty.
@@ -60,6 +60,7 @@ struct SceneBuilder {
 
     TextureCache textures;
     MeshImporter meshes;
+    ObjCacheUse *objCache = nullptr; // where `mesh` lines' OBJ files are parsed or read back
 
     void warn(const std::string &message);
 };
@@ -70,6 +71,6 @@ void applyDirective(SceneBuilder &builder, std::span<const Token> tokens);
 
 // The parse behind parseScene (scene_loader.h).
 Scene parseSceneText(std::string_view text, const std::filesystem::path &virtualPath,
-                     const SceneLimits &limits);
+                     const SceneLimits &limits, ObjCacheUse *objCache);
 
 } // namespace prism

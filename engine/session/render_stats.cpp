@@ -51,6 +51,14 @@ nlohmann::json sceneStats(const PreparedScene &prepared) {
               {"store_ms", cache.storeMs}}}};
 }
 
+nlohmann::json objCacheStats(const ObjCacheUse &use) {
+    return {{"hits", use.hits},
+            {"misses", use.misses},
+            {"key_ms", use.keyMs},
+            {"read_ms", use.readMs},
+            {"store_ms", use.storeMs}};
+}
+
 nlohmann::json frameStats(const RayCounts &rays, double traceMs, uint32_t resumeDispatches) {
     return {{"rays",
              {{"primary", rays.primary}, {"shadow", rays.shadow}, {"secondary", rays.secondary}}},

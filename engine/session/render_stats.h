@@ -12,6 +12,7 @@
 #include "accel/grid.h"
 #include "render/ray_tracer.h"
 #include "render/scene_buffers.h"
+#include "scene/obj_cache.h"
 #include "session/prepared_scene.h"
 
 namespace prism {
@@ -23,6 +24,10 @@ std::string gridText(const Grid &grid);
 // grid_max_per_cell, grid_choice, triangles {scene, prototypes, instances, placed}, build_ms and
 // grid_cache {state, key_ms, read_ms, store_ms}.
 nlohmann::json sceneStats(const PreparedScene &prepared);
+
+// Where the scene's OBJ files came from (scene/obj_cache.h): obj_cache {hits, misses, key_ms,
+// read_ms, store_ms}.
+nlohmann::json objCacheStats(const ObjCacheUse &use);
 
 // One traced frame: rays {primary, shadow, secondary}, mrays_per_s (over `traceMs`) and
 // resume_dispatches.

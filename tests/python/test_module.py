@@ -73,6 +73,32 @@ def test_a_lean_build_renders_what_prism_render_lean_renders(renderer, tmp_path)
             prism.Scene.from_string("sphere 0 0 0 1\n", build=bad)
 
 
+def test_big_obj_files_are_kept_parsed_in_the_cache_and_render_the_same(renderer, tmp_path,
+                                                                         monkeypatch):
+    # A height field of 1.2 MB of OBJ text: over the 1 MiB that is worth caching.
+    n = 136
+    lines = [f"v {4 * i / (n - 1) - 2:.6f} {0.2 * np.sin(i * 0.3) * np.cos(j * 0.2):.6f} "
+             f"{4 * j / (n - 1) - 2:.6f}" for j in range(n) for i in range(n)]
+    for j in range(n - 1):
+        for i in range(n - 1):
+            a = j * n + i + 1
+            lines += [f"f {a} {a + n} {a + 1}", f"f {a + 1} {a + n} {a + n + 1}"]
+    (tmp_path / "field.obj").write_text("\n".join(lines) + "\n")
+    assert (tmp_path / "field.obj").stat().st_size >= 1 << 20
+    scene_path = tmp_path / "field.scene"
+    scene_path.write_text("camera eye 0 3 4 look 0 0 0 fov 50\nlight 2 5 3 color 1 1 1\n"
+                          "mesh field.obj smooth\n")
+    cache = tmp_path / "cache"
+    monkeypatch.setenv("PRISM_CACHE_DIR", str(cache))
+    uncached = renderer.render(prism.load(str(scene_path), cache=False), 32, 24)["rgb"]
+    assert not cache.exists(), "cache=False writes nothing"
+    for _ in range(2):  # parsed and stored, then read back
+        scene = prism.load(str(scene_path))
+        assert np.array_equal(renderer.render(scene, 32, 24)["rgb"], uncached)
+        assert len(list(cache.glob("obj-*.bin"))) == 1
+    assert scene.grid_cache == "hit"
+
+
 def test_a_frame_set_from_python_is_prism_render_frame(renderer, tmp_path):
     scene = prism.load(str(SCENES / "showcase-turntable.scene"))
     assert scene.animated
@@ -205,9 +231,10 @@ def test_a_seed_draws_what_prism_render_draws_under_it(renderer, tmp_path):
 
 
 # What only a command's run reports: the CPU's walk counts of every image, the process's
-# pipeline cache, a range's frames.
+# pipeline cache, a range's frames, and how its one load read the OBJ files (a render from
+# Python does not load: prism.load did, perhaps long before).
 COMMAND_ONLY = {"grid_cells_per_primary_ray", "grid_tests_per_primary_ray", "grid_counts_stopped",
-                "pipeline_cache", "per_frame", "skipped"}
+                "pipeline_cache", "per_frame", "skipped", "obj_cache"}
 
 
 def test_last_stats_has_the_names_and_figures_of_prism_render_stats(renderer, tmp_path):

@@ -330,6 +330,22 @@ void expectExtentHoldsEverySurface(int primitives) {
     EXPECT_LT(extent.boxes.size(), blocks / 4) << "mostly empty space here";
     EXPECT_LE(extent.boxes.size(), kMaxExtentBoxes);
     EXPECT_LE(extent.startBoxes.size(), kMaxStartBoxes);
+    // The blocks are marked by each thread's share of the primitives and merged: the same boxes,
+    // in the same order, at every thread count.
+    auto same = [](const std::vector<Aabb> &a, const std::vector<Aabb> &b) {
+        if (a.size() != b.size())
+            return false;
+        for (size_t i = 0; i < a.size(); ++i)
+            if (a[i].min != b[i].min || a[i].max != b[i].max)
+                return false;
+        return true;
+    };
+    for (unsigned threads : {1u, 3u}) {
+        ParallelThreads limit(threads);
+        SceneExtent again = sceneExtent(scene, grid);
+        EXPECT_TRUE(same(again.boxes, extent.boxes)) << threads << " threads";
+        EXPECT_TRUE(same(again.startBoxes, extent.startBoxes)) << threads << " threads";
+    }
     if (primitives == 0) {
         EXPECT_GT(extent.startBoxes.size(), extent.boxes.size()) << "the start blocks are finer";
     }

@@ -116,7 +116,8 @@ void runRender(const RenderOptions &o) {
         preloadImageFiles();
     });
     Timer loadTimer;
-    Scene loaded = loadScene(o.scenePath);
+    ObjCacheUse objCache{cache ? &*cache : nullptr};
+    Scene loaded = loadScene(o.scenePath, {}, &objCache);
     double loadMs = loadTimer.elapsedMs();
     // The camera samples of one whole image decide how much the grid's build does
     // (GridOptions::effort): not the tile's or crop's, nor the range's, so that a tile is the
@@ -280,6 +281,7 @@ void runRender(const RenderOptions &o) {
             {"pipeline_cache",
              {{"loaded_bytes", pipelineCacheLoaded}, {"saved_bytes", pipelineCacheSaved}}}};
         stats.update(sceneStats(prepared));
+        stats["obj_cache"] = objCacheStats(objCache);
         stats.update(frameStats(last.rays, bestMs, last.resumeDispatches));
         if (vulkan) {
             stats["tiles"] = tileStats(last.tiles);
