@@ -21,6 +21,11 @@
 namespace prism {
 namespace {
 
+// Primitives from which the pipeline's compile and the arrays' upload overlap (RayTracer's
+// constructor): under 100k the arrays take less than 20 ms, less than a thread made while
+// OpenImageIO loads may wait to start.
+constexpr uint64_t kCompileBesideUploadPrimitives = 100'000;
+
 ArrayLimits arrayLimits(const vk::Context &context, const TracerOptions &options) {
     const VkPhysicalDeviceLimits &device = context.properties().limits;
     ArrayLimits limits;
@@ -52,12 +57,17 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
         throw Error("profiling needs a Vulkan context created with the shader clock");
     region_ = options.region.empty() ? wholeImage(width, height) : options.region;
     checkPixelBounds(region_, width, height);
-    // The tracer's pipeline compiles on a thread of its own while the scene's arrays are written
-    // and its extent is found: on lavapipe each takes 100-150 ms for a 1M-triangle mesh, one
-    // after the other before (issue 31, docs/benchmarks.md). Should the upload throw, the
-    // future's destructor waits for the compile, whose pipeline then goes with it.
+    // A big scene's tracer pipeline compiles on a thread of its own while the scene's arrays are
+    // written and its extent is found: on lavapipe each takes 100-150 ms for a 1M-triangle mesh,
+    // one after the other before (issue 31, docs/benchmarks.md). A small scene's arrays take a
+    // few milliseconds, and a thread started while OpenImageIO's libraries are still loading
+    // waits for the dynamic loader's lock (its thread-local storage): 150-200 ms for one sphere.
+    // Should the upload throw, the future's destructor waits for the compile, whose pipeline
+    // then goes with it.
     std::future<std::unique_ptr<vk::ComputePipeline>> compiled = std::async(
-        std::launch::async, [this] { return compileTracerPipeline(features_, Module::Full); });
+        scene.finitePrimitiveCount() >= kCompileBesideUploadPrimitives ? std::launch::async
+                                                                       : std::launch::deferred,
+        [this] { return compileTracerPipeline(features_, Module::Full); });
     scene_ = uploadScene(
         context, runner_, packScene(scene, grid, features_.cellTriangles, features_.cellSpheres),
         limits_, options.stagedUpload ? UploadPath::Staged : UploadPath::InPlaceWhereShared);

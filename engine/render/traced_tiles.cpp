@@ -253,6 +253,9 @@ void forEachSeenBox(const gpu::GpuFrameParams &frame, const RayFrame &cam,
     }
 }
 
+// Primitives from which occupiedBlocks marks its blocks on every core.
+constexpr uint32_t kParallelBlocksPrimitives = 50'000;
+
 // The blocks of a grid of at most `blocks` per axis over `grid`'s box that some primitive's
 // surface may meet. Blocks inside a sphere are left out: any ray that reaches one crosses the
 // sphere's surface first, in a nearer block, so the tiles and start distances stay bounds, and
@@ -285,10 +288,11 @@ std::vector<Aabb> occupiedBlocks(const FinitePrimitives &primitives, const Grid 
     };
     // Each thread marks the blocks of its share of the primitives in its own array, merged
     // after: a set's union, the same whatever the threads (a pass over a 1M-triangle mesh took
-    // 30-40 ms on one core, and the extent makes two or three).
+    // 30-40 ms on one core, and the extent makes two or three). A small scene's pass takes
+    // under a millisecond on one thread, while starting the pool's threads as OpenImageIO's
+    // libraries load waits for the dynamic loader's lock: 150-200 ms for five spheres.
     size_t blockCount = size_t(res.x) * res.y * res.z;
-    size_t shares =
-        std::min<size_t>(parallelThreadCount(), std::max<uint32_t>(1, primitives.count()));
+    size_t shares = primitives.count() >= kParallelBlocksPrimitives ? parallelThreadCount() : 1;
     std::vector<std::vector<uint8_t>> marks(shares);
     parallelFor(shares, [&](size_t share) {
         std::vector<uint8_t> &occupied = marks[share];

@@ -10,7 +10,8 @@ start and exit included), the phases prism-render measures, peak resident memory
 same scene in the same run: its BVH build (`prism-gridbench`, rtcCommitScene) and its frame of
 the same camera and shadow rays (`prism-bench --baseline embree`), with Prism's load added for
 Embree's first image (Embree has no scene reader: it would read the same files). Cold runs
-start with an empty grid cache each; the warm runs then read the grid the first one stored.
+start with an empty cache each; the warm runs then read back the grid and the parsed OBJ the
+first one stored.
 
     tools/scripts/first_image.py [--bin build/bin] [--rungs 100000,1000000,4000000]
                                  [--kinds tori,sphere-mesh] [--runs 3] [--work DIR]
@@ -190,7 +191,7 @@ def chart(rows, path: Path) -> None:
     warm = [r.get("warm_wall_ms") for r in rows]
     wx = [i for i, v in zip(x, warm) if v]
     ax.scatter(wx, [v / 1e3 for v in warm if v], marker="v", s=70, color="#2a9d8f", zorder=3,
-               label="Prism again, grid from the cache")
+               label="Prism again, grid and OBJ from the cache")
     ax.set_xticks(list(x), labels)
     ax.set_ylabel("seconds, command to image file")
     ax.set_title("First image of big meshes, phase by phase "
