@@ -9,6 +9,7 @@
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "core/worker_pool.h"
@@ -21,7 +22,15 @@ inline std::atomic<unsigned> &parallelThreadLimit() {
     return limit;
 }
 
+// A limit for the calling thread's loops alone (0: none); set through ParallelThreadsHere.
+inline unsigned &threadParallelLimit() {
+    thread_local unsigned limit = 0;
+    return limit;
+}
+
 inline unsigned parallelThreadCount() {
+    if (unsigned here = threadParallelLimit(); here > 0)
+        return here;
     unsigned limit = parallelThreadLimit();
     return limit > 0 ? limit : std::max(1u, std::thread::hardware_concurrency());
 }
@@ -35,6 +44,20 @@ public:
     ~ParallelThreads() { parallelThreadLimit() = previous_; }
     ParallelThreads(const ParallelThreads &) = delete;
     ParallelThreads &operator=(const ParallelThreads &) = delete;
+
+private:
+    unsigned previous_;
+};
+
+// Limits the parallelFor loops the calling thread starts to `threads` while it lives, other
+// threads' loops as they were: for work that shares the cores with another job of its own.
+class ParallelThreadsHere {
+public:
+    explicit ParallelThreadsHere(unsigned threads)
+        : previous_(std::exchange(threadParallelLimit(), threads)) {}
+    ~ParallelThreadsHere() { threadParallelLimit() = previous_; }
+    ParallelThreadsHere(const ParallelThreadsHere &) = delete;
+    ParallelThreadsHere &operator=(const ParallelThreadsHere &) = delete;
 
 private:
     unsigned previous_;
@@ -74,6 +97,14 @@ template <typename Body> void parallelFor(size_t count, Body body) {
     }
     if (error)
         std::rethrow_exception(error);
+}
+
+// Starts the threads parallelFor keeps, now rather than at its first call: a program calls it
+// first thing, so that no loop later starts a thread while another thread is loading shared
+// libraries (a thread's start waits for the dynamic loader's lock, which `dlopen` holds for a
+// whole load: 70-200 ms while prism-render loads OpenImageIO's ~260 libraries).
+inline void startParallelThreads() {
+    runOnWorkerPool(parallelThreadCount() - 1, [] {});
 }
 
 // body(i) for every i in [0, count), handed out `block` indices at a time: for loops whose

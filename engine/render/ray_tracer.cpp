@@ -1,12 +1,14 @@
 #include "render/ray_tracer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
-#include <future>
+#include <exception>
 #include <optional>
 #include <string>
 
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "core/timer.h"
 #include "render/frame_params.h"
 #include "render/lavapipe_threads.h"
@@ -20,11 +22,6 @@
 
 namespace prism {
 namespace {
-
-// Primitives from which the pipeline's compile and the arrays' upload overlap (RayTracer's
-// constructor): under 100k the arrays take less than 20 ms, less than a thread made while
-// OpenImageIO loads may wait to start.
-constexpr uint64_t kCompileBesideUploadPrimitives = 100'000;
 
 ArrayLimits arrayLimits(const vk::Context &context, const TracerOptions &options) {
     const VkPhysicalDeviceLimits &device = context.properties().limits;
@@ -57,23 +54,20 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
         throw Error("profiling needs a Vulkan context created with the shader clock");
     region_ = options.region.empty() ? wholeImage(width, height) : options.region;
     checkPixelBounds(region_, width, height);
-    // A big scene's tracer pipeline compiles on a thread of its own while the scene's arrays are
-    // written and its extent is found: on lavapipe each takes 100-150 ms for a 1M-triangle mesh,
-    // one after the other before (issue 31, docs/benchmarks.md). A small scene's arrays take a
-    // few milliseconds, and a thread started while OpenImageIO's libraries are still loading
-    // waits for the dynamic loader's lock (its thread-local storage): 150-200 ms for one sphere.
-    // Should the upload throw, the future's destructor waits for the compile, whose pipeline
-    // then goes with it.
-    std::future<std::unique_ptr<vk::ComputePipeline>> compiled = std::async(
-        scene.finitePrimitiveCount() >= kCompileBesideUploadPrimitives ? std::launch::async
-                                                                       : std::launch::deferred,
-        [this] { return compileTracerPipeline(features_, Module::Full); });
-    scene_ = uploadScene(
-        context, runner_, packScene(scene, grid, features_.cellTriangles, features_.cellSpheres),
-        limits_, options.stagedUpload ? UploadPath::Staged : UploadPath::InPlaceWhereShared);
-    extent_ = sceneExtent(scene, grid, options.maxStartBoxes);
+    auto writeArrays = [&] {
+        scene_ = uploadScene(
+            context, runner_,
+            packScene(scene, grid, features_.cellTriangles, features_.cellSpheres), limits_,
+            options.stagedUpload ? UploadPath::Staged : UploadPath::InPlaceWhereShared);
+        extent_ = sceneExtent(scene, grid, options.maxStartBoxes);
+    };
+    if (scene.finitePrimitiveCount() >= options.compileBesideUploadFrom) {
+        compileBeside(writeArrays);
+    } else {
+        writeArrays();
+        pipeline_ = compileTracerPipeline(features_, Module::Full);
+    }
     createImages(width, height);
-    pipeline_ = compiled.get();
     bindTracerPipeline(*pipeline_);
     if (options.cullMissTiles)
         missPipeline_ = createTracerPipeline(features_.backgroundOnly(), Module::BackgroundOnly);
@@ -81,6 +75,39 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     // A GPU schedules workgroups its own way: there the order of the rows does not matter.
     dispatchShares_ = context.isLavapipe() && options.rowsByThread ? lavapipeDispatchShares() : 0;
     choosePlaneGuards(scene);
+}
+
+// A big scene's tracer pipeline compiles on one core while the scene's arrays are written and its
+// extent found on the other: on lavapipe each takes 100-200 ms for a 1M-triangle mesh, one after
+// the other before (issue 31, docs/benchmarks.md). Both run on parallelFor's kept threads, the
+// writers' own loops held to their thread meanwhile: a thread started now could wait for the
+// dynamic loader's lock while OpenImageIO loads (core/parallel_for.h, startParallelThreads).
+// The first failure of either is rethrown once both are done.
+void RayTracer::compileBeside(const std::function<void()> &writeArrays) {
+    std::unique_ptr<vk::ComputePipeline> compiled;
+    std::exception_ptr failures[2];
+    std::atomic<int> next{0};
+    auto part = [&] {
+        int mine = next++;
+        try {
+            if (mine == 0) {
+                compiled = compileTracerPipeline(features_, Module::Full);
+            } else {
+                ParallelThreadsHere alone(1);
+                writeArrays();
+            }
+        } catch (...) {
+            failures[mine] = std::current_exception();
+        }
+    };
+    if (!runOnWorkerPool(1, part)) { // the pool is busy: one after the other
+        part();
+        part();
+    }
+    for (const std::exception_ptr &failure : failures)
+        if (failure)
+            std::rethrow_exception(failure);
+    pipeline_ = std::move(compiled);
 }
 
 void RayTracer::choosePlaneGuards(const Scene &scene) {

@@ -214,6 +214,8 @@ private:
     std::unique_ptr<vk::ComputePipeline> compileTracerPipeline(const TracerFeatures &features,
                                                                Module module) const;
     void bindTracerPipeline(vk::ComputePipeline &pipeline);
+    // pipeline_ compiled while writeArrays() runs (the constructor, for big scenes).
+    void compileBeside(const std::function<void()> &writeArrays);
     // Resumable tracing: each sample of each tile dispatched until all its pixels are done.
     void startResuming();
     FrameResult renderResumable(const Camera &camera, uint32_t samplesPerPixel,

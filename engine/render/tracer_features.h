@@ -73,6 +73,10 @@ struct TracerOptions {
     // otherwise reads the accumulation in place (RayTracer::readback); only for the test that
     // compares the two.
     bool copiedReadback = false;
+    // Finite primitives from which the tracer's pipeline compiles on one core while the scene's
+    // arrays are written and its extent found on the other (RayTracer::compileBeside): below,
+    // one after the other, as the arrays take less than the hand-over. Tests set 0 to compare.
+    uint64_t compileBesideUploadFrom = 100'000;
 };
 
 struct TracerFeatures {

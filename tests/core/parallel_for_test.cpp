@@ -78,6 +78,21 @@ TEST(ParallelFor, UsesAtMostTheThreadsAllowed) {
         << "the limit ends with its scope";
 }
 
+// A limit for one thread's loops leaves the other threads' as they were.
+TEST(ParallelFor, AThreadsOwnLimitIsItsAlone) {
+    ParallelThreads limit(3);
+    {
+        ParallelThreadsHere alone(1);
+        std::set<std::thread::id> ids = threadsUsed();
+        ASSERT_EQ(ids.size(), 1u);
+        EXPECT_EQ(*ids.begin(), std::this_thread::get_id());
+        unsigned elsewhere = 0;
+        std::thread([&] { elsewhere = parallelThreadCount(); }).join();
+        EXPECT_EQ(elsewhere, 3u);
+    }
+    EXPECT_EQ(parallelThreadCount(), 3u) << "the thread's limit ends with its scope";
+}
+
 // The same threads serve call after call: the pool keeps them.
 TEST(ParallelFor, KeepsItsThreadsBetweenCalls) {
     ParallelThreads limit(2);

@@ -56,5 +56,18 @@ TEST_F(SceneUpload, InPlaceAndStagedRenderTheSameFrame) {
     }
 }
 
+// The tracer's pipeline compiled beside the arrays' upload (RayTracer::compileBeside, big scenes
+// only unless asked) makes the same frame as one after the other.
+TEST_F(SceneUpload, CompiledBesideTheUploadRendersTheSameFrame) {
+    Scene showcase = loadScene(std::filesystem::path(PRISM_SCENES_DIR) / "showcase.scene");
+    ASSERT_LT(showcase.finitePrimitiveCount(), TracerOptions{}.compileBesideUploadFrom);
+    TracerOptions apart, beside;
+    apart.writeAov = beside.writeAov = true;
+    beside.compileBesideUploadFrom = 0;
+    GridOptions g = parseGridOption("adaptive");
+    expectSameFrame(renderGpu(context(), showcase, 64, 48, 1, 2, g, apart),
+                    renderGpu(context(), showcase, 64, 48, 1, 2, g, beside));
+}
+
 } // namespace
 } // namespace prism::test

@@ -16,6 +16,7 @@
 #include "cache/disk_cache.h"
 #include "core/error.h"
 #include "core/median.h"
+#include "core/parallel_for.h"
 #include "core/timer.h"
 #include "frame_range.h"
 #include "frame_sources.h"
@@ -87,6 +88,8 @@ struct FrameRecord {
 } // namespace
 
 void runRender(const RenderOptions &o) {
+    // Before the device's and OpenImageIO's libraries load on threads of their own.
+    startParallelThreads();
     Timer process; // from here (the command line is parsed) to the last image on disk
     size_t skipped = 0;
     std::vector<FrameJob> jobs = frameJobs(o, skipped);
