@@ -204,11 +204,11 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
                    "Use the first Vulkan device whose name contains this text");
     std::string cacheDir;
     app.add_option("--cache", cacheDir,
-                   "Keep built grids in this directory and reuse them (default: $PRISM_CACHE_DIR, "
-                   "else $XDG_CACHE_HOME/prism, else ~/.cache/prism)");
+                   "Keep built grids, and OBJ files of 1 MiB or more as parsed, in this directory "
+                   "and reuse them (default: $PRISM_CACHE_DIR, else $XDG_CACHE_HOME/prism, else "
+                   "~/.cache/prism)");
     app.add_flag("--no-cache", options.noCache,
-                 "Build the grid without reading or writing the "
-                 "cache");
+                 "Build the grid and parse the OBJ files without reading or writing the cache");
     // Everything below checks the values given: a bad one is a usage error (exit 2).
     std::optional<int> status = parseCommandLine("prism-render", app, argc, argv, [&] {
         options.scenePath = scene;
