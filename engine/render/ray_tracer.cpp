@@ -100,10 +100,9 @@ void RayTracer::compileBeside(const std::function<void()> &writeArrays) {
             failures[mine] = std::current_exception();
         }
     };
-    if (!runOnWorkerPool(1, part)) { // the pool is busy: one after the other
+    runOnWorkerPool(1, part);
+    while (next < 2) // the pool was busy, or had no thread to give: the rest on this one
         part();
-        part();
-    }
     for (const std::exception_ptr &failure : failures)
         if (failure)
             std::rethrow_exception(failure);

@@ -1,11 +1,14 @@
 // Scene arrays reach the device in place where it shares the host's memory (lavapipe), through a
 // staging buffer elsewhere (render/scene_buffers.h, UploadPath): both give the same arrays, so
 // the same frame, and on a CPU device the in-place path is the one taken.
+#include <atomic>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 
 #include <gtest/gtest.h>
 
+#include "core/worker_pool.h"
 #include "gpu_fixture.h"
 #include "render/scene_buffers.h"
 #include "render_helpers.h"
@@ -65,8 +68,18 @@ TEST_F(SceneUpload, CompiledBesideTheUploadRendersTheSameFrame) {
     apart.writeAov = beside.writeAov = true;
     beside.compileBesideUploadFrom = 0;
     GridOptions g = parseGridOption("adaptive");
-    expectSameFrame(renderGpu(context(), showcase, 64, 48, 1, 2, g, apart),
-                    renderGpu(context(), showcase, 64, 48, 1, 2, g, beside));
+    GpuRender reference = renderGpu(context(), showcase, 64, 48, 1, 2, g, apart);
+    expectSameFrame(reference, renderGpu(context(), showcase, 64, 48, 1, 2, g, beside));
+    // Made while parallelFor's pool is busy (a tracer made inside a parallel loop): both parts
+    // on the calling thread, the same frame.
+    std::atomic<int> turn{0};
+    std::optional<GpuRender> inBusyPool;
+    runOnWorkerPool(1, [&] {
+        if (turn++ == 0)
+            inBusyPool = renderGpu(context(), showcase, 64, 48, 1, 2, g, beside);
+    });
+    ASSERT_TRUE(inBusyPool.has_value());
+    expectSameFrame(reference, *inBusyPool);
 }
 
 } // namespace
