@@ -37,12 +37,14 @@ void expectSameModel(const ObjModel &a, const ObjModel &b) {
     // Byte for byte (both structs are without padding: obj_cache.cpp); an empty array's data()
     // may be null, which memcmp must not be given.
     ASSERT_EQ(a.corners.size(), b.corners.size());
-    if (!a.corners.empty())
+    if (!a.corners.empty()) {
         EXPECT_EQ(0, std::memcmp(a.corners.data(), b.corners.data(),
                                  a.corners.size() * sizeof(ObjCorner)));
+    }
     ASSERT_EQ(a.faces.size(), b.faces.size());
-    if (!a.faces.empty())
+    if (!a.faces.empty()) {
         EXPECT_EQ(0, std::memcmp(a.faces.data(), b.faces.data(), a.faces.size() * sizeof(ObjFace)));
+    }
     ASSERT_EQ(a.useMtl.size(), b.useMtl.size());
     for (size_t i = 0; i < a.useMtl.size(); ++i) {
         EXPECT_EQ(a.useMtl[i].name, b.useMtl[i].name);
