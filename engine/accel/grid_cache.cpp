@@ -1,7 +1,6 @@
 #include "accel/grid_cache.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 
 #include "accel/grid_source_digest.h"
@@ -155,12 +154,7 @@ Grid buildGridCached(const Scene &scene, const GridOptions &options, const GridC
             o.state = "hit";
             return grid;
         } catch (const BlobFormatError &e) {
-            std::error_code ec;
-            std::filesystem::remove(policy.cache->entryPath("grid", o.key), ec);
-            std::fprintf(stderr,
-                         "prism: warning: cache: grid entry %s is damaged (%s); removed, "
-                         "built anew\n",
-                         o.key.c_str(), e.what());
+            policy.cache->discard("grid", o.key, e.what());
         }
     }
     Grid grid = buildGrid(scene, options);

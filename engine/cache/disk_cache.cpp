@@ -114,6 +114,13 @@ std::optional<CacheEntry> DiskCache::load(std::string_view kind, std::string_vie
     return entry;
 }
 
+void DiskCache::discard(std::string_view kind, std::string_view key, const std::string &why) const {
+    std::filesystem::path path = entryPath(kind, key);
+    std::error_code ec;
+    std::filesystem::remove(path, ec);
+    warn("entry '" + path.string() + "' is damaged (" + why + "); removed, made anew");
+}
+
 void DiskCache::store(std::string_view kind, std::string_view key, uint32_t format,
                       std::string_view payload) const {
     if (options_.directory.empty() || key.size() > sizeof(EntryHeader::key))

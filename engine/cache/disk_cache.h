@@ -50,6 +50,9 @@ public:
     // damaged or stale (then removed, with a warning).
     std::optional<CacheEntry> load(std::string_view kind, std::string_view key,
                                    uint32_t format) const;
+    // Removes the entry under (kind, key) with one warning line: for a caller whose entry passed
+    // the checks above but does not make the thing it stored (`why`); the caller makes it anew.
+    void discard(std::string_view kind, std::string_view key, const std::string &why) const;
     // Stores `payload` under (kind, key), then trims the cache to its size. Never throws.
     void store(std::string_view kind, std::string_view key, uint32_t format,
                std::string_view payload) const;

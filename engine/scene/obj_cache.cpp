@@ -1,8 +1,6 @@
 #include "scene/obj_cache.h"
 
-#include <cstdio>
 #include <optional>
-#include <system_error>
 
 #include "cache/blob.h"
 #include "cache/content_hash.h"
@@ -138,12 +136,7 @@ ObjModel loadObjFile(const std::filesystem::path &path, const std::string &fileN
             ++use->hits;
             return model;
         } catch (const BlobFormatError &e) {
-            std::error_code ec;
-            std::filesystem::remove(use->cache->entryPath("obj", key), ec);
-            std::fprintf(stderr,
-                         "prism: warning: cache: OBJ entry %s for '%s' is damaged (%s); removed, "
-                         "parsed anew\n",
-                         key.c_str(), fileName.c_str(), e.what());
+            use->cache->discard("obj", key, "parsed from '" + fileName + "': " + e.what());
         }
     }
     return parseAndStore(bytes, fileName, key, *use);

@@ -2,7 +2,7 @@
 // Parsed OBJ files kept in the disk cache (cache/disk_cache.h), so that loading a big mesh
 // again digests its file instead of parsing it: parsing a 41 MB, 1M-triangle OBJ took 186-221
 // ms, digesting it and reading the parsed arrays back about a quarter of that (issue 31,
-// docs/benchmarks.md "The parsed-mesh cache").
+// docs/benchmarks.md "The parsed-OBJ cache").
 //
 // The key is a digest of the file's bytes, the name it is shown by (the model's warnings name
 // it), the entry format and the parser's own sources (so a changed parser never meets an old

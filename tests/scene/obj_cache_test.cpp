@@ -140,11 +140,10 @@ TEST(ObjCache, AnEntryThatIsNoModelIsParsedAgain) {
         std::filesystem::path obj = c.dir.write("parts.obj", kObj);
         c.cache.store("obj", objCacheKey(kObj, "parts.obj"), kObjCacheFormat, bad);
         ObjCacheUse use = c.use();
-        testing::internal::CaptureStderr();
         ObjModel model = loadObjFile(obj, "parts.obj", &use);
-        std::string err = testing::internal::GetCapturedStderr();
-        EXPECT_NE(err.find("damaged"), std::string::npos) << err;
-        EXPECT_NE(err.find("parts.obj"), std::string::npos) << err;
+        ASSERT_EQ(c.warnings.size(), 1u);
+        EXPECT_NE(c.warnings[0].find("damaged"), std::string::npos) << c.warnings[0];
+        EXPECT_NE(c.warnings[0].find("parts.obj"), std::string::npos) << c.warnings[0];
         EXPECT_EQ(use.misses, 1);
         expectSameModel(model, parsed);
         // The parse was stored whole in its place.
