@@ -154,6 +154,9 @@ public:
     const TracerFeatures &features() const { return features_; }
     // The scene's arrays on the device, as uploaded (--stats: what instancing saves shows here).
     std::vector<ArrayBytes> sceneArrayBytes() const { return arrayBytes(scene_); }
+    // Whether the full tiles' pipeline was made from its module with the specialization folded
+    // in (TracerOptions::foldSpecialization).
+    bool specializationFolded() const { return pipeline_->folded(); }
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
     const PixelRect &region() const { return region_; }

@@ -77,6 +77,10 @@ struct TracerOptions {
     // arrays are written and its extent found on the other (RayTracer::compileBeside): below,
     // one after the other, as the arrays take less than the hand-over. Tests set 0 to compare.
     uint64_t compileBesideUploadFrom = 100'000;
+    // The specialization folded into the tracer's modules on the host before the driver
+    // translates them (vk/spirv_specialize.h): its pipelines are made in a third to half the
+    // time. Off only to measure that (prism-bench no-fold) and for the test that compares.
+    bool foldSpecialization = true;
 };
 
 struct TracerFeatures {

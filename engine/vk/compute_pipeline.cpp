@@ -1,6 +1,9 @@
 #include "vk/compute_pipeline.h"
 
+#include <string>
+
 #include "vk/context.h"
+#include "vk/spirv_specialize.h"
 #include "vk/vk_check.h"
 
 namespace prism::vk {
@@ -8,7 +11,16 @@ namespace prism::vk {
 ComputePipeline::ComputePipeline(const Context &context, const ComputePipelineDesc &desc)
     : device_(context.device()), set_(device_, desc.bindings, VK_SHADER_STAGE_COMPUTE_BIT) {
     try {
-        module_ = createShaderModule(device_, desc.spirv.data(), desc.spirv.size_bytes());
+        // The constants folded into the module first (vk/spirv_specialize.h); should that fail,
+        // the driver gets the module as it is, with the constants as specialization info.
+        std::vector<uint32_t> folded;
+        if (desc.foldSpecialization && !desc.specialization.empty()) {
+            std::string error;
+            folded = foldSpecialization(desc.spirv, desc.specialization, error);
+            folded_ = !folded.empty();
+        }
+        std::span<const uint32_t> spirv = folded_ ? std::span<const uint32_t>(folded) : desc.spirv;
+        module_ = createShaderModule(device_, spirv.data(), spirv.size_bytes());
 
         VkDescriptorSetLayout setLayout = set_.layout();
         VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, desc.pushConstantBytes};

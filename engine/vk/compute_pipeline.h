@@ -18,6 +18,9 @@ struct ComputePipelineDesc {
     std::vector<VkDescriptorType> bindings; // binding i has type bindings[i], count 1
     std::vector<SpecializationConstant> specialization;
     uint32_t pushConstantBytes = 0;
+    // Fold the specialization constants into the module on the host (vk/spirv_specialize.h):
+    // the driver then translates only the code they leave live. Off only to compare the two.
+    bool foldSpecialization = true;
 };
 
 class ComputePipeline {
@@ -39,6 +42,8 @@ public:
     // Binds pipeline and descriptor set on `commands`.
     void bind(VkCommandBuffer commands) const;
     VkPipelineLayout layout() const { return layout_; }
+    // Whether the driver got the module with the specialization folded in (else as it was).
+    bool folded() const { return folded_; }
 
 private:
     void destroy();
@@ -47,6 +52,7 @@ private:
     VkShaderModule module_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
+    bool folded_ = false;
 };
 
 } // namespace prism::vk

@@ -68,6 +68,8 @@ BenchVariant parseBenchVariant(const std::string &text) {
             v.tracer.maxStartBoxes = parseCount(text, token.substr(12), "start-boxes");
         } else if (token == "no-cell-primitives") {
             v.tracer.cellPrimitives = false;
+        } else if (token == "no-fold") {
+            v.tracer.foldSpecialization = false;
         } else if (token == "resumable") {
             v.tracer.resumable = true;
         } else if (token == "texel" || token == "storage") {
@@ -85,7 +87,7 @@ BenchVariant parseBenchVariant(const std::string &text) {
                         "' (use auto, regular, off, adaptive, two-level, grid=N|NxNyNz, density=L, "
                         "lean, no-reflection, no-refraction, no-shadows, no-cull, no-plane-tiles, "
                         "no-tile-starts, start-boxes=N, bit-reversed-rows, "
-                        "no-cell-primitives, texel, "
+                        "no-cell-primitives, no-fold, texel, "
                         "storage, "
                         "resumable, offset=relative|E, triangle=watertight|mt, flat; join with +)");
         }

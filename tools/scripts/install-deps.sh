@@ -6,6 +6,7 @@ packages=(
     libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools glslang-tools
     libglfw3-dev libglm-dev libtinyobjloader-dev libopenimageio-dev openimageio-tools
     libgtest-dev libcli11-dev nlohmann-json3-dev libimgui-dev xvfb xauth
+    spirv-tools # its optimizer folds the tracer's specialization (engine/vk/spirv_specialize.h)
     libxxhash-dev # the grid cache's keys and checksums (engine/cache)
     libjemalloc-dev # the tools' allocator: huge pages for big meshes (tools/common/allocator_config.cpp)
     python3 # tools/scripts/mutants.py (the list check is a test) and benchmark.py
