@@ -144,7 +144,7 @@ Grid buildGridCached(const Scene &scene, const GridOptions &options, const GridC
         return buildGrid(scene, options);
     }
     Timer timer;
-    o.key = gridCacheKey(scene, options);
+    o.key = policy.key.empty() ? gridCacheKey(scene, options) : policy.key;
     o.keyMs = timer.elapsedMs();
     timer.reset();
     if (std::optional<CacheEntry> entry = policy.cache->load("grid", o.key, kGridCacheFormat)) {

@@ -33,6 +33,9 @@ struct GridCacheOutcome {
 
 struct GridCachePolicy {
     const DiskCache *cache = nullptr; // none: always build
+    // gridCacheKey(scene, options), where the caller has it already (prism-view compares keys
+    // to keep its grid): the scene is not digested again. Empty: digested here.
+    std::string key;
 };
 
 std::string gridCacheKey(const Scene &scene, const GridOptions &options);

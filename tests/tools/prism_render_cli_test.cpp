@@ -15,6 +15,7 @@
 #include "cli_runner.h"
 #include "io/image_reader.h"
 #include "temp_dir_fixture.h"
+#include "wavy_field_obj.h"
 
 namespace fs = std::filesystem;
 
@@ -153,23 +154,7 @@ TEST_F(PrismRenderCli, GridFromTheCacheRendersTheSameImage) {
 // the first render, read back by the second, and all three images (the third without the cache)
 // are the same, pixel for pixel: a textured, smooth-shaded height field of 33,282 triangles.
 TEST_F(PrismRenderCli, MeshFromTheObjCacheRendersTheSameImage) {
-    std::string obj;
-    constexpr int n = 130; // vertices a side
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            double x = i / double(n - 1), z = j / double(n - 1);
-            obj += "v " + std::to_string(4 * x - 2) + " " +
-                   std::to_string(0.3 * std::sin(9 * x) * std::cos(7 * z)) + " " +
-                   std::to_string(4 * z - 2) + "\nvt " + std::to_string(x) + " " +
-                   std::to_string(z) + "\n";
-        }
-    for (int j = 0; j + 1 < n; ++j)
-        for (int i = 0; i + 1 < n; ++i) {
-            int a = j * n + i + 1, b = a + 1, c = a + n, d = c + 1;
-            auto corner = [](int v) { return std::to_string(v) + "/" + std::to_string(v); };
-            obj += "f " + corner(a) + " " + corner(c) + " " + corner(b) + "\nf " + corner(b) + " " +
-                   corner(c) + " " + corner(d) + "\n";
-        }
+    std::string obj = prism::test::wavyFieldObj();
     ASSERT_GE(obj.size(), size_t(1) << 20) << "big enough to be cached";
     write("field.obj", obj);
     fs::path scene = write("field.scene", "camera eye 0 3 4 look 0 0 0 fov 50\n"

@@ -2,17 +2,22 @@
 // message makes prism-view exit 1). A scripted run holds the scene's camera, resizes the window
 // twice, then saves the converged accumulation; it must equal prism-render's image of the same
 // scene, size and sample count, because both record the same tracer dispatches.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "cli_runner.h" // tests/tools
 #include "io/image_reader.h"
 #include "missing_tool.h"
+#include "wavy_field_obj.h"
 
 namespace fs = std::filesystem;
 
@@ -294,6 +299,54 @@ TEST_F(PrismViewXvfb, FarFromTheOriginAndBackLooksTheSame) {
         differing += differs ? 1 : 0;
     }
     EXPECT_LE(differing, size_t(96 * 72 / 1000)) << differing << " pixels differ";
+}
+
+// The viewer keeps what it built on disk as prism-render does (--cache): a second start reads
+// the big OBJ's parse and the grid back, and shows the same image as a cold prism-render.
+TEST_F(PrismViewXvfb, ASecondStartReadsTheMeshAndTheGridFromTheCache) {
+    write("field.obj", prism::test::wavyFieldObj());
+    fs::path scene = write("field.scene", "camera eye 0 3 4 look 0 0 0 fov 50\n"
+                                          "light 2 5 3 color 1 1 1\n"
+                                          "sphere 0 0.6 0 0.5\nmesh field.obj\n");
+    fs::path cache = dir_ / "cache";
+    std::string common = scene.string() + " --size 64x48 --cache " + cache.string();
+    auto benchmark = [&]() {
+        CliResult view = run(underXvfb(common + " --benchmark 2"));
+        EXPECT_EQ(viewExit(view), 0) << view.out;
+        std::istringstream lines(view.out);
+        for (std::string line; std::getline(lines, line);)
+            if (line.rfind("{", 0) == 0) // the report: the one line of JSON
+                return nlohmann::json::parse(line);
+        ADD_FAILURE() << "no report:\n" << view.out;
+        return nlohmann::json::object();
+    };
+    auto entries = [&] {
+        std::vector<std::string> names;
+        for (const fs::directory_entry &e : fs::directory_iterator(cache))
+            if (e.path().extension() == ".bin")
+                names.push_back(e.path().filename().string());
+        std::sort(names.begin(), names.end());
+        return names;
+    };
+    nlohmann::json cold = benchmark();
+    EXPECT_EQ(cold["grid_cache"]["state"], "miss");
+    EXPECT_EQ(cold["obj_cache"]["misses"], 1);
+    std::vector<std::string> stored = entries();
+    nlohmann::json warm = benchmark();
+    EXPECT_EQ(warm["grid_cache"]["state"], "hit");
+    EXPECT_EQ(warm["obj_cache"]["hits"], 1);
+    EXPECT_EQ(warm["obj_cache"]["misses"], 0);
+    EXPECT_EQ(warm["rays"], cold["rays"]);
+    // A third start, to a screenshot: from the cache again (nothing new stored), and the image
+    // prism-render makes without one.
+    fs::path shot = dir_ / "view.exr";
+    CliResult view = run(underXvfb(common + " --spp 2 --script-frames 4 --screenshot " +
+                                   shot.string() + " --validation"));
+    ASSERT_EQ(viewExit(view), 0) << view.out;
+    EXPECT_EQ(entries(), stored);
+    double difference = differenceFromPrismRender(shot, scene, 2);
+    EXPECT_GE(difference, 0.0);
+    EXPECT_LE(difference, 1e-6);
 }
 
 TEST_F(PrismViewXvfb, BenchmarkPrintsOneJsonLine) {

@@ -7,7 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cache/disk_cache.h"
+#include "cache_option.h"
 #include "command_line.h"
 #include "core/error.h"
 #include "frame_range.h"
@@ -202,13 +202,8 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
                  "Enable Vulkan validation layers (also PRISM_VALIDATION=1)");
     app.add_option("--device", options.deviceFilter,
                    "Use the first Vulkan device whose name contains this text");
-    std::string cacheDir;
-    app.add_option("--cache", cacheDir,
-                   "Keep built grids, and OBJ files of 1 MiB or more as parsed, in this directory "
-                   "and reuse them (default: $PRISM_CACHE_DIR, else $XDG_CACHE_HOME/prism, else "
-                   "~/.cache/prism)");
-    app.add_flag("--no-cache", options.noCache,
-                 "Build the grid and parse the OBJ files without reading or writing the cache");
+    CacheOption cache;
+    addCacheOptions(app, cache);
     // Everything below checks the values given: a bad one is a usage error (exit 2).
     std::optional<int> status = parseCommandLine("prism-render", app, argc, argv, [&] {
         options.scenePath = scene;
@@ -233,10 +228,7 @@ bool parseRenderOptions(int argc, char **argv, RenderOptions &options, int &exit
             throw Error("--show-tiles shows the Vulkan tracer's tiles; the cpu backend has none");
         if ((options.aovDepth || options.aovNormal) && ext != ".exr")
             throw Error("--aov needs an .exr output (PNG holds colour only)");
-        if (options.noCache && !cacheDir.empty())
-            throw Error("--cache and --no-cache cannot be given together");
-        options.cacheDir =
-            cacheDir.empty() ? DiskCache::defaultDirectory() : std::filesystem::path(cacheDir);
+        options.cacheDir = cache.resolve();
         if (framesOption->count() > 0) {
             options.frames = parseFrameList(frames);
             if (options.frames.size() > 1 && !hasFrameField(output))

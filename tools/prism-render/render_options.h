@@ -36,9 +36,9 @@ struct RenderOptions {
     bool quiet = false;
     bool validation = false;
     std::string deviceFilter;
-    // The grid cache (accel/grid_cache.h): this directory, or none with --no-cache.
+    // The grid and OBJ cache (accel/grid_cache.h, scene/obj_cache.h): this directory, or none
+    // (empty) with --no-cache.
     std::filesystem::path cacheDir;
-    bool noCache = false;
     std::string commandLine; // as typed, for the image's metadata
 };
 

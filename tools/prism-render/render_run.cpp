@@ -103,7 +103,7 @@ void runRender(const RenderOptions &o) {
         checkCanStage(job.output);
     // Built grids and the device's pipeline cache are kept here between runs.
     std::optional<DiskCache> cache;
-    if (!o.noCache && !o.cacheDir.empty())
+    if (!o.cacheDir.empty())
         cache.emplace(DiskCacheOptions{o.cacheDir});
     std::optional<ContextInBackground> context;
     if (o.backend == Backend::Vulkan)

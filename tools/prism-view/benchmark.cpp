@@ -54,6 +54,10 @@ std::string benchmarkJson(const BenchmarkReport &r) {
                            {"frame_ms_p95", percentile(sorted, 95.0)},
                            {"frame_ms_p99", percentile(sorted, 99.0)},
                            {"fps", totalMs > 0.0 ? 1000.0 * double(sorted.size()) / totalMs : 0.0},
+                           {"load_ms", r.loadMs},
+                           {"build_ms", r.buildMs},
+                           {"grid_cache", {{"state", r.gridCache}}},
+                           {"obj_cache", {{"hits", r.objCacheHits}, {"misses", r.objCacheMisses}}},
                            {"rays", r.rays},
                            {"mrays_per_s", totalMs > 0.0 ? double(r.rays) / (totalMs * 1e3) : 0.0}};
     return json.dump();

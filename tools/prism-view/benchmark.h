@@ -21,6 +21,11 @@ struct BenchmarkReport {
     uint64_t rays = 0;           // traced in the measured frames
     double warmupMs = 0.0;       // the warm-up frames, with the shader compile (lavapipe
                                  // compiles at the first dispatch)
+    // Where the scene shown came from: its load and its grid's build (or the cache's read), and
+    // the cache's part in them (prism-render --stats' names).
+    double loadMs = 0.0, buildMs = 0.0;
+    std::string gridCache = "off"; // "off", "hit" or "miss"
+    uint32_t objCacheHits = 0, objCacheMisses = 0;
 };
 
 std::string benchmarkJson(const BenchmarkReport &report);

@@ -14,10 +14,10 @@ std::optional<std::filesystem::file_time_type> SceneSource::modificationTime() c
     return time;
 }
 
-Scene SceneSource::load() {
+Scene SceneSource::load(ObjCacheUse *objCache) {
     // Taken before reading: a save during the load is seen as a change next time.
     loadedTime_ = modificationTime();
-    return loadScene(path_);
+    return loadScene(path_, {}, objCache);
 }
 
 bool SceneSource::changedOnDisk() {

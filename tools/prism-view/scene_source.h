@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "core/timer.h"
+#include "scene/obj_cache.h"
 #include "scene/scene.h"
 
 namespace prism {
@@ -11,8 +12,9 @@ namespace prism {
 class SceneSource {
 public:
     explicit SceneSource(std::filesystem::path path);
-    // Loads and parses the file; throws prism::FileError / prism::Error as loadScene does.
-    Scene load();
+    // Loads and parses the file, its big OBJ files through `objCache` where given
+    // (scene/obj_cache.h); throws prism::FileError / prism::Error as loadScene does.
+    Scene load(ObjCacheUse *objCache = nullptr);
     // True once after the file's modification time changes (checked every half second). A file
     // that is briefly missing (an editor saving by rename) does not count as a change.
     bool changedOnDisk();

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cache_option.h"
 #include "command_line.h"
 #include "core/error.h"
 #include "render/ray_tracer.h"
@@ -67,6 +68,8 @@ bool parseViewOptions(int argc, char **argv, ViewOptions &options, ViewScript &s
                  "the exit status 1");
     app.add_option("--device", options.deviceFilter,
                    "Use the first Vulkan device whose name contains this text");
+    CacheOption cache;
+    addCacheOptions(app, cache);
     ViewScriptOptions scriptOptions(app); // for tests and soak runs; not in --help
     // Everything below checks the values given: a bad one is a usage error (exit 2).
     std::optional<int> status = parseCommandLine("prism-view", app, argc, argv, [&] {
@@ -83,6 +86,7 @@ bool parseViewOptions(int argc, char **argv, ViewOptions &options, ViewScript &s
                 throw Error("--motion-scale takes auto or 1..8, got \"" + motionScale + "\"");
             options.motionScale = uint32_t(motionScale[0] - '0');
         }
+        options.cacheDir = cache.resolve();
         script = scriptOptions.script();
         options.validation = validationWanted(options.validation);
         options.commandLine = commandLineText(argc, argv);

@@ -27,6 +27,9 @@ struct ViewOptions {
     double frame = 1.0;           // of the scene's animation, at start ([ and ] step it)
     bool validation = false;
     std::string deviceFilter;
+    // Built grids and parsed OBJ files are kept here between runs and reloads (--cache), or
+    // nowhere (empty: --no-cache).
+    std::filesystem::path cacheDir;
     std::string commandLine;
 };
 

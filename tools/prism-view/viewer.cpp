@@ -29,8 +29,15 @@ constexpr double kStillMs = 150.0;
 // --motion-scale auto aims a moving frame at this (about 20 FPS).
 constexpr double kMotionFrameMs = 50.0;
 
-std::unique_ptr<vk::Context> makeContext(const ViewOptions &options) {
+std::unique_ptr<DiskCache> openCache(const ViewOptions &options) {
+    if (options.cacheDir.empty())
+        return nullptr;
+    return std::make_unique<DiskCache>(DiskCacheOptions{options.cacheDir});
+}
+
+std::unique_ptr<vk::Context> makeContext(const ViewOptions &options, const DiskCache *cache) {
     vk::ContextOptions contextOptions;
+    contextOptions.pipelineStore = cache;
     contextOptions.validation = options.validation;
     contextOptions.deviceNameFilter = options.deviceFilter;
     contextOptions.instanceExtensions = GlfwSession::requiredInstanceExtensions();
@@ -66,7 +73,8 @@ void setFrame(Scene &centred, double frame) {
 Viewer::Viewer(const ViewOptions &options, ViewDriver &driver)
     : options_(options), driver_(driver),
       window_(options.width, options.height, windowTitle(options.scenePath)),
-      context_(makeContext(options)), source_(options.scenePath), frame_(options.frame),
+      cache_(openCache(options)), context_(makeContext(options, cache_.get())),
+      source_(options.scenePath), frame_(options.frame),
       fly_(Camera{}, 1.0f) {
     surface_ = window_.createSurface(context_->instance());
     VkExtent2D size = window_.framebufferSize();
@@ -82,7 +90,8 @@ Viewer::Viewer(const ViewOptions &options, ViewDriver &driver)
         std::make_unique<Overlay>(window_, *context_, present_->renderPass(), kFramesInFlight);
 
     toggles_.grid = options_.grid.mode != GridOptions::Mode::Off;
-    Scene scene = source_.load(); // at start a broken scene is fatal: there is nothing to show
+    objCache_.cache = cache_.get();
+    Scene scene = loadScene(); // at start a broken scene is fatal: there is nothing to show
     for (const std::string &warning : scene.warnings)
         std::fprintf(stderr, "%s\n", warning.c_str());
     glm::dvec3 eye = scene.camera.eye;
@@ -92,8 +101,21 @@ Viewer::Viewer(const ViewOptions &options, ViewDriver &driver)
 }
 
 Viewer::~Viewer() {
-    if (context_)
+    if (context_) {
         vkDeviceWaitIdle(context_->device());
+        try { // the pipelines this run made, for the next one (a GPU driver's compile)
+            context_->savePipelineCache();
+        } catch (const Error &e) {
+            std::fprintf(stderr, "prism-view: %s\n", e.what());
+        }
+    }
+}
+
+Scene Viewer::loadScene() {
+    Timer timer;
+    Scene scene = source_.load(&objCache_);
+    loadMs_ = timer.elapsedMs();
+    return scene;
 }
 
 void Viewer::buildTracer(const Scene &scene) {
@@ -116,12 +138,20 @@ void Viewer::buildTracer(const Scene &scene) {
                                                               : GridWork::Built;
     std::optional<Grid> built;
     double buildMs = gridBuildMs_;
+    std::string cacheState = gridCacheState_;
     if (work != GridWork::Kept) {
         Timer buildTimer;
+        // A whole grid comes from the disk cache where it was built before, in this run or
+        // another (prism-render's too, for the same options and camera).
+        GridCacheOutcome outcome;
+        bool cached = cache_ && gridOptions.mode != GridOptions::Mode::Off;
         built = work == GridWork::SceneLevel
                     ? buildGridOverMeshGrids(scene, gridOptions, grid_.meshGrids)
-                    : buildGrid(scene, gridOptions);
+                    : buildGridCached(scene, gridOptions,
+                                      GridCachePolicy{cached ? cache_.get() : nullptr, gridKey},
+                                      &outcome);
         buildMs = buildTimer.elapsedMs();
+        cacheState = work == GridWork::SceneLevel ? "off" : outcome.state;
     }
     const Grid &grid = work == GridWork::Kept ? grid_ : *built;
     TracerOptions tracerOptions;
@@ -142,6 +172,7 @@ void Viewer::buildTracer(const Scene &scene) {
     meshKey_ = std::move(meshKey);
     gridWork_ = work;
     gridBuildMs_ = buildMs;
+    gridCacheState_ = std::move(cacheState);
     present_->setSource(tracer_->accumulation());
     resetCounters_ = true;
     lastCounters_ = {};
@@ -152,7 +183,7 @@ void Viewer::buildTracer(const Scene &scene) {
 bool Viewer::reloadScene() {
     try {
         // Centred where the flown camera is, which stays where it was (in the file's terms).
-        showScene(source_.load(), scene_.origin + fly_.camera().eye);
+        showScene(loadScene(), scene_.origin + fly_.camera().eye);
         sceneError_.clear();
         notice_ = "reloaded " + source_.path().filename().string() +
                   (gridWork_ == GridWork::Kept         ? " (same geometry: grid kept)"
@@ -653,6 +684,11 @@ int Viewer::run() {
         report.width = tracer_->width();
         report.height = tracer_->height();
         report.depth = options_.maxDepth;
+        report.loadMs = loadMs_;
+        report.buildMs = gridBuildMs_;
+        report.gridCache = gridCacheState_;
+        report.objCacheHits = uint32_t(objCache_.hits);
+        report.objCacheMisses = uint32_t(objCache_.misses);
         report.warmupFrames = kBenchmarkWarmupFrames;
         report.rays = benchmarkRays_;
         std::printf("%s\n", benchmarkJson(report).c_str());

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "accel/grid.h"
+#include "cache/disk_cache.h"
 #include "benchmark.h"
 #include "core/timer.h"
 #include "fly_camera.h"
@@ -50,6 +51,8 @@ private:
 
     // Grid and tracer for `scene` with the current toggles; on failure the old ones stay.
     void buildTracer(const Scene &scene);
+    // The scene file, through the OBJ cache, timed (loadMs_).
+    Scene loadScene();
     bool reloadScene(); // false: the error is shown, the last good scene stays
     void recenterOnCamera();
     // Shows frame frame_ + delta (not before 1) of the scene's animation; the camera jumps to
@@ -94,6 +97,9 @@ private:
     ViewDriver &driver_;
     GlfwSession glfw_;
     Window window_;
+    // Grids, parsed OBJ files and the device's pipeline cache, kept between runs (--cache);
+    // before context_, which keeps its pipeline cache here.
+    std::unique_ptr<DiskCache> cache_;
     std::unique_ptr<vk::Context> context_;
     vk::Surface surface_;
     std::unique_ptr<vk::Swapchain> swapchain_;
@@ -116,6 +122,9 @@ private:
     enum class GridWork { Built, SceneLevel, Kept };
     GridWork gridWork_ = GridWork::Built;
     double gridBuildMs_ = 0.0;
+    std::string gridCacheState_ = "off"; // of the last build: "off", "hit" or "miss"
+    double loadMs_ = 0.0;                // the scene file's last load
+    ObjCacheUse objCache_;               // its OBJ files' cache hits and misses, all loads
     uint32_t recenterings_ = 0; // the fly camera went far from the origin (scene_origin.h)
     FeatureToggles toggles_;
     std::unique_ptr<RayTracer> tracer_;
