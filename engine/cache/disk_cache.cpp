@@ -131,8 +131,9 @@ void DiskCache::store(std::string_view kind, std::string_view key, uint32_t form
     std::string temporary = path.string() + ".tmp-XXXXXX";
     int fd = ::mkstemp(temporary.data());
     if (fd < 0) {
-        warn("cannot write in '" + options_.directory.string() + "': " + std::strerror(errno) +
-             "; going on without the cache");
+        if (!saidUnwritable_.exchange(true))
+            warn("cannot write in '" + options_.directory.string() + "': " +
+                 std::strerror(errno) + "; going on without the cache");
         return;
     }
     EntryHeader header{};

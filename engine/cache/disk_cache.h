@@ -11,6 +11,7 @@
 // - Bounded: after each write the least recently used entries (file times, touched on every
 //   hit) are removed until the directory holds at most maxBytes.
 // - Best effort: a directory that cannot be made or written costs a warning, never a render.
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -65,6 +66,8 @@ private:
     void trim(const std::filesystem::path &keep) const;
 
     DiskCacheOptions options_;
+    // A directory that cannot be written is said once: a run stores several entries.
+    mutable std::atomic<bool> saidUnwritable_{false};
 };
 
 } // namespace prism

@@ -185,6 +185,9 @@ TEST(DiskCache, AnUnwritableDirectoryWarnsAndGoesOn) {
     cache.store("grid", kKey, 1, "bytes");
     EXPECT_FALSE(cache.load("grid", kKey, 1).has_value());
     EXPECT_EQ(warnings.size(), 1u);
+    // A run stores more than once (its grid, its pipelines): the user is told once.
+    cache.store("pipelines", kKey, 1, "more bytes");
+    EXPECT_EQ(warnings.size(), 1u);
 }
 
 TEST(DiskCache, DefaultDirectoryFollowsTheEnvironment) {
