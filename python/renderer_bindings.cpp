@@ -1,5 +1,6 @@
 // prism.Renderer: the Vulkan device, and the tracer of the last scene and settings rendered.
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.h"
+#include "cache/disk_cache.h"
 #include "core/timer.h"
 #include "render/ray_tracer.h"
 #include "session/render_stats.h"
@@ -65,12 +67,23 @@ py::object toPython(const nlohmann::json &value) {
 
 class PyRenderer {
 public:
-    PyRenderer(const std::optional<std::string> &device, bool validation) {
+    PyRenderer(const std::optional<std::string> &device, bool validation, bool cache) {
         vk::ContextOptions options;
         options.validation = validation;
         options.deviceNameFilter = device.value_or("");
+        // The device's pipeline cache and the tracer's folded modules kept where prism-render
+        // keeps them (cache/disk_cache.h), so a script's first render does not fold again.
+        if (std::filesystem::path directory = DiskCache::defaultDirectory();
+            cache && !directory.empty()) {
+            store_ = std::make_unique<DiskCache>(DiskCacheOptions{directory});
+            options.pipelineStore = store_.get();
+        }
         py::gil_scoped_release released;
         context_ = std::make_unique<vk::Context>(options);
+    }
+    ~PyRenderer() {
+        if (context_ && store_) // the driver's cache, for the next script (a GPU's compile)
+            context_->savePipelineCache();
     }
 
     py::dict render(const std::shared_ptr<PyScene> &scene, uint32_t width, uint32_t height,
@@ -190,6 +203,7 @@ public:
     }
 
 private:
+    std::unique_ptr<DiskCache> store_; // before context_, which keeps its pipelines in it
     std::unique_ptr<vk::Context> context_;
     std::mutex mutex_;
     TracerKey key_;
@@ -208,11 +222,14 @@ void bindRenderer(py::module_ &m) {
         "arrays and compiled tracer: renders of the same scene at the same size, depth and "
         "AOVs reuse them (a camera or frame change does not rebuild anything). Renders run "
         "with the GIL released.")
-        .def(py::init<const std::optional<std::string> &, bool>(), py::arg("device") = py::none(),
-             py::arg("validation") = false,
+        .def(py::init<const std::optional<std::string> &, bool, bool>(),
+             py::arg("device") = py::none(), py::arg("validation") = false,
+             py::arg("cache") = true,
              "device: the first Vulkan device whose name contains this text (None: a discrete "
              "GPU if there is one, else lavapipe); validation: Vulkan validation layers, a "
-             "message then fails the render.")
+             "message then fails the render; cache: keep the device's pipeline cache and the "
+             "tracer's specialized modules in prism.load's cache directory "
+             "($PRISM_CACHE_DIR, else ~/.cache/prism) and read them back.")
         .def("render", &PyRenderer::render, py::arg("scene"), py::arg("width") = 640,
              py::arg("height") = 480, py::arg("spp") = 1, py::arg("depth") = 5, py::arg("seed") = 0,
              py::arg("aovs") = std::vector<std::string>{"rgb"},

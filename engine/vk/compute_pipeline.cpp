@@ -16,7 +16,8 @@ ComputePipeline::ComputePipeline(const Context &context, const ComputePipelineDe
         std::vector<uint32_t> folded;
         if (desc.foldSpecialization && !desc.specialization.empty()) {
             std::string error;
-            folded = foldSpecialization(desc.spirv, desc.specialization, error);
+            folded = foldSpecializationStored(desc.spirv, desc.specialization, context.store(),
+                                              error);
             folded_ = !folded.empty();
         }
         std::span<const uint32_t> spirv = folded_ ? std::span<const uint32_t>(folded) : desc.spirv;

@@ -63,6 +63,7 @@ Context::Context(const ContextOptions &options) {
         pickPhysicalDevice(options);
         createDevice(options);
         pipelineCache_ = std::make_unique<PipelineCache>(*this, options.pipelineStore);
+        store_ = options.pipelineStore;
     } catch (...) {
         destroy(); // tolerates half-built state
         throw;

@@ -63,6 +63,9 @@ public:
     // Writes the pipeline cache to ContextOptions::pipelineStore if it changed; bytes written.
     uint64_t savePipelineCache() const;
     uint64_t pipelineCacheLoadedBytes() const;
+    // ContextOptions::pipelineStore: where pipelines keep what they make between runs (the
+    // driver's cache, folded modules), or null.
+    const DiskCache *store() const { return store_; }
 
 private:
     void destroy();
@@ -85,6 +88,7 @@ private:
     bool shaderClock_ = false;
     std::atomic<uint32_t> validationMessages_{0};
     std::unique_ptr<PipelineCache> pipelineCache_; // destroyed before the device
+    const DiskCache *store_ = nullptr;
 };
 
 } // namespace prism::vk

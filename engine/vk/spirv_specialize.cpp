@@ -1,8 +1,12 @@
 #include "vk/spirv_specialize.h"
 
+#include <cstring>
 #include <unordered_map>
 
 #include <spirv-tools/optimizer.hpp>
+
+#include "cache/content_hash.h"
+#include "cache/disk_cache.h"
 
 namespace prism::vk {
 
@@ -38,6 +42,44 @@ std::vector<uint32_t> foldSpecialization(std::span<const uint32_t> spirv,
             error = "the SPIR-V optimizer failed";
         return {};
     }
+    return folded;
+}
+
+namespace {
+
+// The stored entries' format: a new one when the passes change, so that no module folded by
+// other passes is read back.
+constexpr uint32_t kFoldFormat = 1;
+constexpr uint32_t kSpirvMagic = 0x07230203;
+
+} // namespace
+
+std::vector<uint32_t> foldSpecializationStored(std::span<const uint32_t> spirv,
+                                               const std::vector<SpecializationConstant> &constants,
+                                               const DiskCache *store, std::string &error) {
+    if (!store)
+        return foldSpecialization(spirv, constants, error);
+    ContentHash key;
+    key.text("prism spirv fold").value(kFoldFormat).bytes(spirv.data(), spirv.size_bytes());
+    for (const SpecializationConstant &c : constants)
+        key.value(c.id).value(c.value);
+    std::string hex = key.hex();
+    if (std::optional<CacheEntry> entry = store->load("spirv", hex, kFoldFormat)) {
+        std::string_view bytes = entry->payload;
+        // The entry's checksum held: a payload that is not a module is an old bug's, refolded.
+        if (bytes.size() >= 20 && bytes.size() % 4 == 0) {
+            std::vector<uint32_t> folded(bytes.size() / 4);
+            std::memcpy(folded.data(), bytes.data(), bytes.size());
+            if (folded[0] == kSpirvMagic)
+                return folded;
+        }
+        store->discard("spirv", hex, "not a SPIR-V module");
+    }
+    std::vector<uint32_t> folded = foldSpecialization(spirv, constants, error);
+    if (!folded.empty())
+        store->store("spirv", hex, kFoldFormat,
+                     std::string_view(reinterpret_cast<const char *>(folded.data()),
+                                      folded.size() * sizeof(uint32_t)));
     return folded;
 }
 

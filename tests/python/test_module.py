@@ -73,6 +73,22 @@ def test_a_lean_build_renders_what_prism_render_lean_renders(renderer, tmp_path)
             prism.Scene.from_string("sphere 0 0 0 1\n", build=bad)
 
 
+def test_a_renderer_keeps_its_specialized_tracer_in_the_cache(tmp_path, monkeypatch):
+    # The tracer's module folded for a scene's features is stored, and a later Renderer (a
+    # script run again) reads it back instead of folding it: the same image either way.
+    cache = tmp_path / "cache"
+    monkeypatch.setenv("PRISM_CACHE_DIR", str(cache))
+    scene = prism.load(str(SCENES / "rand50.scene"), cache=False)
+    without = prism.Renderer(validation=True, cache=False).render(scene, 32, 24)["rgb"]
+    assert not cache.exists(), "cache=False writes nothing"
+    entries = []
+    for _ in range(2):  # folded and stored, then read back (nothing new stored)
+        stored = prism.Renderer(validation=True).render(scene, 32, 24)["rgb"]
+        assert np.array_equal(stored, without)
+        entries.append(sorted(p.name for p in cache.glob("spirv-*.bin")))
+    assert entries[0] and entries[1] == entries[0]
+
+
 def test_big_obj_files_are_kept_parsed_in_the_cache_and_render_the_same(renderer, tmp_path,
                                                                          monkeypatch):
     # A height field of 1.2 MB of OBJ text: over the 1 MiB that is worth caching.

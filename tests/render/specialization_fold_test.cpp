@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include "cache/disk_cache.h"
 #include "gpu_fixture.h"
+#include "read_file.h"
 #include "render/tracer_features.h"
 #include "render_helpers.h"
 #include "scene/scene_loader.h"
@@ -58,6 +60,41 @@ TEST(SpecializationFold, AnUnreadableModuleSaysWhy) {
     std::string error;
     EXPECT_TRUE(vk::foldSpecialization(garbage, TracerFeatures{}.specialization(), error).empty());
     EXPECT_FALSE(error.empty());
+}
+
+// Through a store: folded once and kept ("spirv" entries), read back the next time; other
+// constants are another entry, never the first one's module; a damaged entry is folded anew.
+TEST(SpecializationFold, AFoldedModuleIsStoredAndReadBack) {
+    TempDir dir;
+    std::vector<std::string> warnings;
+    DiskCache store(DiskCacheOptions{dir.path(), uint64_t(1) << 30,
+                                     [&](const std::string &w) { warnings.push_back(w); }});
+    TracerFeatures spheres;
+    spheres.kinds = 1u << gpu::kKindSphere;
+    TracerFeatures meshes = spheres;
+    meshes.kinds |= 1u << gpu::kKindTriangle;
+    std::string error;
+    std::vector<uint32_t> first =
+        vk::foldSpecializationStored(kTracer, spheres.specialization(), &store, error);
+    EXPECT_EQ(first, folded(spheres));
+    std::vector<std::filesystem::path> entries;
+    for (const auto &e : std::filesystem::directory_iterator(dir.path()))
+        entries.push_back(e.path());
+    ASSERT_EQ(entries.size(), 1u);
+    EXPECT_EQ(entries[0].filename().string().rfind("spirv-", 0), 0u);
+    EXPECT_EQ(vk::foldSpecializationStored(kTracer, spheres.specialization(), &store, error),
+              first);
+    EXPECT_EQ(vk::foldSpecializationStored(kTracer, meshes.specialization(), &store, error),
+              folded(meshes));
+    EXPECT_NE(folded(meshes), first);
+    // A byte of the first entry's module flipped: its checksum fails, it is folded anew.
+    std::string bytes = readFile(entries[0]);
+    bytes[bytes.size() - 5] ^= 0x5a;
+    dir.write(entries[0].filename().string(), bytes);
+    EXPECT_EQ(vk::foldSpecializationStored(kTracer, spheres.specialization(), &store, error),
+              first);
+    EXPECT_EQ(warnings.size(), 1u) << "the damaged entry, said once";
+    EXPECT_TRUE(error.empty()) << error;
 }
 
 class SpecializationFoldRender : public GpuTest {};

@@ -15,9 +15,9 @@ std::filesystem::path CacheOption::resolve() const {
 
 void addCacheOptions(CLI::App &app, CacheOption &option) {
     app.add_option("--cache", option.directory,
-                   "Keep built grids, and OBJ files of 1 MiB or more as parsed, in this directory "
-                   "and reuse them (default: $PRISM_CACHE_DIR, else $XDG_CACHE_HOME/prism, else "
-                   "~/.cache/prism)");
+                   "Keep built grids, OBJ files of 1 MiB or more as parsed, and the tracer as "
+                   "specialized for the scene in this directory and reuse them (default: "
+                   "$PRISM_CACHE_DIR, else $XDG_CACHE_HOME/prism, else ~/.cache/prism)");
     app.add_flag("--no-cache", option.off,
                  "Build the grid and parse the OBJ files without reading or writing the cache");
 }
