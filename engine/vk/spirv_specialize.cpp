@@ -48,7 +48,9 @@ std::vector<uint32_t> foldSpecialization(std::span<const uint32_t> spirv,
 namespace {
 
 // The stored entries' format: a new one when the passes change, so that no module folded by
-// other passes is read back.
+// other passes is read back. SPIRV-Tools' version is not in the key: any fold of the same module
+// with the same constants leaves code that computes the same values, so another version's
+// entry serves as well.
 constexpr uint32_t kFoldFormat = 1;
 constexpr uint32_t kSpirvMagic = 0x07230203;
 
