@@ -223,8 +223,7 @@ void bindRenderer(py::module_ &m) {
         "AOVs reuse them (a camera or frame change does not rebuild anything). Renders run "
         "with the GIL released.")
         .def(py::init<const std::optional<std::string> &, bool, bool>(),
-             py::arg("device") = py::none(), py::arg("validation") = false,
-             py::arg("cache") = true,
+             py::arg("device") = py::none(), py::arg("validation") = false, py::arg("cache") = true,
              "device: the first Vulkan device whose name contains this text (None: a discrete "
              "GPU if there is one, else lavapipe); validation: Vulkan validation layers, a "
              "message then fails the render; cache: keep the device's pipeline cache and the "

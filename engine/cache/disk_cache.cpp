@@ -132,8 +132,8 @@ void DiskCache::store(std::string_view kind, std::string_view key, uint32_t form
     int fd = ::mkstemp(temporary.data());
     if (fd < 0) {
         if (!saidUnwritable_.exchange(true))
-            warn("cannot write in '" + options_.directory.string() + "': " +
-                 std::strerror(errno) + "; going on without the cache");
+            warn("cannot write in '" + options_.directory.string() + "': " + std::strerror(errno) +
+                 "; going on without the cache");
         return;
     }
     EntryHeader header{};

@@ -16,8 +16,8 @@ ComputePipeline::ComputePipeline(const Context &context, const ComputePipelineDe
         std::vector<uint32_t> folded;
         if (desc.foldSpecialization && !desc.specialization.empty()) {
             std::string error;
-            folded = foldSpecializationStored(desc.spirv, desc.specialization, context.store(),
-                                              error);
+            folded =
+                foldSpecializationStored(desc.spirv, desc.specialization, context.store(), error);
             folded_ = !folded.empty();
         }
         std::span<const uint32_t> spirv = folded_ ? std::span<const uint32_t>(folded) : desc.spirv;
@@ -40,8 +40,8 @@ ComputePipeline::ComputePipeline(const Context &context, const ComputePipelineDe
         pipelineInfo.stage.pName = "main";
         pipelineInfo.stage.pSpecializationInfo = specialization.pointer();
         pipelineInfo.layout = layout_;
-        VK_CHECK(vkCreateComputePipelines(device_, context.pipelineCache(), 1, &pipelineInfo, nullptr,
-                                          &pipeline_));
+        VK_CHECK(vkCreateComputePipelines(device_, context.pipelineCache(), 1, &pipelineInfo,
+                                          nullptr, &pipeline_));
     } catch (...) {
         destroy();
         throw;

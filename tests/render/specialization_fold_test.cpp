@@ -104,14 +104,19 @@ class SpecializationFoldRender : public GpuTest {};
 std::string mappedSpheresScene() {
     std::string assets = (kScenes / "..").string();
     return "camera eye 0 2.4 7.2 look 0 1 0 fov 45\n"
-           "environment \"" + assets + "/environments/sky.exr\" intensity 1 rotate 20\n"
+           "environment \"" +
+           assets +
+           "/environments/sky.exr\" intensity 1 rotate 20\n"
            "light -4 6 6 color 0.9 0.88 0.82 radius 0.5\n"
            "light 5 3 4 color 0.35 0.38 0.45\n"
-           "material tiles color 0.75 0.72 0.68 specular 0.4 shininess 48 norm \"" + assets +
+           "material tiles color 0.75 0.72 0.68 specular 0.4 shininess 48 norm \"" +
+           assets +
            "/maps/tiles-normal.png\"\n"
-           "material studs color 0.55 0.6 0.65 specular 0.3 reflect 0.15 bump \"" + assets +
+           "material studs color 0.55 0.6 0.65 specular 0.3 reflect 0.15 bump \"" +
+           assets +
            "/maps/studs-height.png\" bm 0.02\n"
-           "material cow color 1 1 1 specular 0.2 texture \"" + assets +
+           "material cow color 1 1 1 specular 0.2 texture \"" +
+           assets +
            "/models/spot/spot_texture.png\"\n"
            "material glass color 1 1 1 diffuse 0 specular 1 transmit 0.9 ior 1.5\n"
            "material mirror color 0.9 0.9 0.9 diffuse 0.1 specular 0.8 reflect 0.8\n"

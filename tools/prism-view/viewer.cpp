@@ -74,8 +74,7 @@ Viewer::Viewer(const ViewOptions &options, ViewDriver &driver)
     : options_(options), driver_(driver),
       window_(options.width, options.height, windowTitle(options.scenePath)),
       cache_(openCache(options)), context_(makeContext(options, cache_.get())),
-      source_(options.scenePath), frame_(options.frame),
-      fly_(Camera{}, 1.0f) {
+      source_(options.scenePath), frame_(options.frame), fly_(Camera{}, 1.0f) {
     surface_ = window_.createSurface(context_->instance());
     VkExtent2D size = window_.framebufferSize();
     vk::SwapchainOptions swapchainOptions{size, options_.vsync, VK_NULL_HANDLE};

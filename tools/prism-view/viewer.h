@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "accel/grid.h"
-#include "cache/disk_cache.h"
 #include "benchmark.h"
+#include "cache/disk_cache.h"
 #include "core/timer.h"
 #include "fly_camera.h"
 #include "frame_stats.h"
@@ -125,7 +125,7 @@ private:
     std::string gridCacheState_ = "off"; // of the last build: "off", "hit" or "miss"
     double loadMs_ = 0.0;                // the scene file's last load
     ObjCacheUse objCache_;               // its OBJ files' cache hits and misses, all loads
-    uint32_t recenterings_ = 0; // the fly camera went far from the origin (scene_origin.h)
+    uint32_t recenterings_ = 0;          // the fly camera went far from the origin (scene_origin.h)
     FeatureToggles toggles_;
     std::unique_ptr<RayTracer> tracer_;
     bool resetCounters_ = true;
