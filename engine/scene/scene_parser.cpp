@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "scene/diagnostics.h"
 #include "scene/text_file.h"
+#include "scene/tokenizer.h"
 
 namespace prism {
 
@@ -25,22 +26,15 @@ void reserveForGeometry(std::string_view text, SceneBuilder &builder) {
     size_t triangles = 0, vertices = 0;
     auto startsWithWord = [](std::string_view line, std::string_view word) {
         return line.size() > word.size() && line.substr(0, word.size()) == word &&
-               (line[word.size()] == ' ' || line[word.size()] == '\t');
+               isBlank(line[word.size()]);
     };
-    for (size_t at = 0; at < text.size();) {
-        size_t end = text.find('\n', at);
-        if (end == std::string_view::npos)
-            end = text.size();
-        std::string_view line = text.substr(at, end - at);
-        size_t first = line.find_first_not_of(" \t");
-        if (first != std::string_view::npos) {
-            line.remove_prefix(first);
-            if (startsWithWord(line, "f") || startsWithWord(line, "triangle"))
-                ++triangles;
-            else if (startsWithWord(line, "v"))
-                ++vertices;
-        }
-        at = end + 1;
+    LineCursor lines(text);
+    for (std::string_view line; lines.next(line);) {
+        line = trimBlanks(line);
+        if (startsWithWord(line, "f") || startsWithWord(line, "triangle"))
+            ++triangles;
+        else if (startsWithWord(line, "v"))
+            ++vertices;
     }
     builder.scene.triangles.reserve(
         size_t(std::min<uint64_t>(triangles, builder.limits.maxTriangles)));

@@ -63,7 +63,6 @@ Context::Context(const ContextOptions &options) {
         pickPhysicalDevice(options);
         createDevice(options);
         pipelineCache_ = std::make_unique<PipelineCache>(*this, options.pipelineStore);
-        store_ = options.pipelineStore;
     } catch (...) {
         destroy(); // tolerates half-built state
         throw;
@@ -84,6 +83,10 @@ uint64_t Context::savePipelineCache() const {
 
 uint64_t Context::pipelineCacheLoadedBytes() const {
     return pipelineCache_->loadedBytes();
+}
+
+const DiskCache *Context::store() const {
+    return pipelineCache_->store();
 }
 
 void Context::destroy() {

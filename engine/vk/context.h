@@ -65,7 +65,7 @@ public:
     uint64_t pipelineCacheLoadedBytes() const;
     // ContextOptions::pipelineStore: where pipelines keep what they make between runs (the
     // driver's cache, folded modules), or null.
-    const DiskCache *store() const { return store_; }
+    const DiskCache *store() const;
 
 private:
     void destroy();
@@ -88,7 +88,6 @@ private:
     bool shaderClock_ = false;
     std::atomic<uint32_t> validationMessages_{0};
     std::unique_ptr<PipelineCache> pipelineCache_; // destroyed before the device
-    const DiskCache *store_ = nullptr;
 };
 
 } // namespace prism::vk

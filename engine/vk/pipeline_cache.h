@@ -31,6 +31,7 @@ public:
 
     VkPipelineCache handle() const { return cache_; }
     uint64_t loadedBytes() const { return loaded_.size(); }
+    const DiskCache *store() const { return store_; }
     // Writes the cache's data to the store when it changed since it was loaded; the bytes
     // written (0 when unchanged or without a store). Never throws.
     uint64_t save();
