@@ -69,20 +69,6 @@ public:
         return primitives.overlapsBox(id, cmin - slack_, cmax + slack_);
     }
 
-    // The same, given the primitive's bounding box: a primitive whose box lies inside the cell
-    // overlaps it, without the exact test (most of a fine cell's primitives, where the
-    // separating-axis test of a triangle is the costly part of a leaf).
-    bool overlaps(uint32_t id, const Aabb &bounds, const FinitePrimitives &primitives,
-                  glm::ivec3 cell) const {
-        glm::dvec3 cmin = lattice_.origin + glm::dvec3(cell) * lattice_.cellSize;
-        glm::dvec3 cmax = cmin + lattice_.cellSize;
-        glm::dvec3 lo = cmin - slack_, hi = cmax + slack_;
-        if (glm::all(glm::greaterThanEqual(bounds.min, lo)) &&
-            glm::all(glm::lessThanEqual(bounds.max, hi)))
-            return true;
-        return primitives.overlapsBox(id, lo, hi);
-    }
-
 private:
     glm::ivec3 cellOf(const glm::dvec3 &p) const {
         glm::dvec3 f;
