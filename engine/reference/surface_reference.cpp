@@ -73,6 +73,8 @@ Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit) {
         break; // nothing was hit: no surface
     case HitKind::Triangle: {
         const Triangle &tri = scene.triangles[hit.index];
+        const TriangleShading none,
+            &shading = tri.shading == kNoShading ? none : scene.triangleShading[tri.shading];
         double b1 = hit.b12.x, b2 = hit.b12.y, b0 = 1.0 - b1 - b2;
         glm::dvec3 p0(tri.p[0]), p1(tri.p[1]), p2(tri.p[2]);
         s.position = b0 * p0 + b1 * p1 + b2 * p2;
@@ -80,23 +82,24 @@ Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit) {
         s.shadingNormal = s.geometricNormal;
         s.uv = glm::dvec2(b1, b2);
         s.shadowPosition = s.position;
-        if (tri.hasNormals) {
-            s.shadingNormal = glm::normalize(b0 * glm::dvec3(tri.n[0]) + b1 * glm::dvec3(tri.n[1]) +
-                                             b2 * glm::dvec3(tri.n[2]));
+        if (shading.hasNormals) {
+            s.shadingNormal =
+                glm::normalize(b0 * glm::dvec3(shading.n[0]) + b1 * glm::dvec3(shading.n[1]) +
+                               b2 * glm::dvec3(shading.n[2]));
             s.smooth = true;
             if (glm::dot(ray.dir, s.geometricNormal) < 0.0) { // the front: where normals point
                 const glm::dvec3 corner[3] = {p0, p1, p2};
-                const glm::dvec3 normal[3] = {glm::dvec3(tri.n[0]), glm::dvec3(tri.n[1]),
-                                              glm::dvec3(tri.n[2])};
+                const glm::dvec3 normal[3] = {glm::dvec3(shading.n[0]), glm::dvec3(shading.n[1]),
+                                              glm::dvec3(shading.n[2])};
                 const double b[3] = {b0, b1, b2};
                 s.shadowPosition = smoothSurfacePoint(s.position, corner, normal, b);
             }
         }
         // Without texture coordinates (u, v) = (b1, b2): corners (0, 0), (1, 0), (0, 1).
         glm::dvec2 uv[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
-        if (tri.hasUVs) {
+        if (shading.hasUVs) {
             for (int c = 0; c < 3; ++c)
-                uv[c] = glm::dvec2(tri.uv[c]);
+                uv[c] = glm::dvec2(shading.uv[c]);
             s.uv = b0 * uv[0] + b1 * uv[1] + b2 * uv[2];
         }
         triangleTangents(p1 - p0, p2 - p0, uv[1] - uv[0], uv[2] - uv[0], s);

@@ -108,19 +108,19 @@ PackedScene packScene(const Scene &scene, const Grid &grid, bool cellTriangles, 
 
     // The tracer reads shading data for every triangle hit where the scene has vertex normals,
     // textures or normal/bump maps (tracer_features.h): then every triangle has its record.
-    packed.triangleLists.push_back(scene.triangles);
+    packed.triangleLists.push_back({scene.triangles, scene.triangleShading});
     for (const MeshPrototype &m : scene.prototypes)
-        packed.triangleLists.push_back(m.triangles);
+        packed.triangleLists.push_back({m.triangles, m.shading});
     bool needShading = false, anyTriangles = false;
     std::vector<uint32_t> firstTriangle; // of each list
-    for (std::span<const Triangle> list : packed.triangleLists) {
+    for (const PackedScene::TriangleList &list : packed.triangleLists) {
         firstTriangle.push_back(uint32_t(packed.triangleCount));
-        packed.triangleCount += list.size();
-        for (const Triangle &t : list) {
-            needShading = needShading || t.hasNormals || t.hasUVs;
-            anyTriangles = true;
+        packed.triangleCount += list.triangles.size();
+        anyTriangles = anyTriangles || !list.triangles.empty();
+        for (const Triangle &t : list.triangles)
             (void)indexAsFloat(t.material); // checked here, written as a float lane later
-        }
+        for (const TriangleShading &s : list.shading)
+            needShading = needShading || s.hasNormals || s.hasUVs;
     }
     for (const Material &m : scene.materials)
         needShading =
@@ -191,14 +191,15 @@ uint64_t cellTriangleRows(const PackedScene &packed) {
 
 namespace {
 
-gpu::GpuTriangle toGpu(const Triangle &t) {
+gpu::GpuTriangle toGpu(const Triangle &t, std::span<const TriangleShading>) {
     return {glm::vec4(t.p[0], float(t.material)), glm::vec4(t.p[1], 0.0f), glm::vec4(t.p[2], 0.0f)};
 }
 
-gpu::GpuTriangleShading shadingOf(const Triangle &t) {
-    return {glm::vec4(t.n[0], t.hasNormals ? 1.0f : 0.0f),
-            glm::vec4(t.n[1], t.hasUVs ? 1.0f : 0.0f), glm::vec4(t.n[2], 0.0f),
-            glm::vec4(t.uv[0], t.uv[1]), glm::vec4(t.uv[2], 0.0f, 0.0f)};
+gpu::GpuTriangleShading toGpuShading(const Triangle &t, std::span<const TriangleShading> list) {
+    const TriangleShading none, &s = t.shading == kNoShading ? none : list[t.shading];
+    return {glm::vec4(s.n[0], s.hasNormals ? 1.0f : 0.0f),
+            glm::vec4(s.n[1], s.hasUVs ? 1.0f : 0.0f), glm::vec4(s.n[2], 0.0f),
+            glm::vec4(s.uv[0], s.uv[1]), glm::vec4(s.uv[2], 0.0f, 0.0f)};
 }
 
 // Each list's records into `out` in order, by blocks on every core: a 1M-triangle array is the
@@ -210,10 +211,11 @@ void writeRecords(const PackedScene &packed, std::span<Record> out, Convert conv
         throw Error(std::string(what) + " array of " + std::to_string(out.size()) +
                     " records, not " + std::to_string(packed.triangleCount));
     size_t first = 0;
-    for (std::span<const Triangle> list : packed.triangleLists) {
-        parallelForInBlocks(list.size(), 1 << 15,
-                            [&](size_t i) { out[first + i] = convert(list[i]); });
-        first += list.size();
+    for (const PackedScene::TriangleList &list : packed.triangleLists) {
+        parallelForInBlocks(list.triangles.size(), 1 << 15, [&](size_t i) {
+            out[first + i] = convert(list.triangles[i], list.shading);
+        });
+        first += list.triangles.size();
     }
 }
 
@@ -230,10 +232,10 @@ void writeTriangleRows(const PackedScene &packed, size_t k, glm::uvec4 *rows) {
 } // namespace
 
 gpu::GpuTriangle packedTriangle(const PackedScene &packed, uint64_t i) {
-    for (std::span<const Triangle> list : packed.triangleLists) {
-        if (i < list.size())
-            return toGpu(list[i]);
-        i -= list.size();
+    for (const PackedScene::TriangleList &list : packed.triangleLists) {
+        if (i < list.triangles.size())
+            return toGpu(list.triangles[i], list.shading);
+        i -= list.triangles.size();
     }
     throw Error("packed triangle past the " + std::to_string(packed.triangleCount) + " there are");
 }
@@ -246,7 +248,7 @@ void writeTriangleShading(const PackedScene &packed, std::span<gpu::GpuTriangleS
     if (!packed.triangleShading && !out.empty())
         throw Error("triangle shading array written for a scene that needs none");
     if (packed.triangleShading)
-        writeRecords(packed, out, shadingOf, "triangle shading");
+        writeRecords(packed, out, toGpuShading, "triangle shading");
 }
 
 void writeCellBoxes(const PackedScene &packed, std::span<glm::uvec4> out) {

@@ -18,7 +18,11 @@ struct PackedScene {
     // The triangles are not copied here either: writeTriangles and writeTriangleShading write
     // their records straight into the device's arrays from the scene's triangles (48 MB at 1M,
     // written once instead of packed and copied). The scene's list, then each prototype's.
-    std::vector<std::span<const Triangle>> triangleLists;
+    struct TriangleList {
+        std::span<const Triangle> triangles;
+        std::span<const TriangleShading> shading; // the records the triangles point to
+    };
+    std::vector<TriangleList> triangleLists;
     uint64_t triangleCount = 0;
     bool triangleShading = false; // every triangle has its shading record (normals, UVs, maps)
     std::vector<gpu::GpuMaterial> materials;

@@ -29,13 +29,14 @@ TracerFeatures featuresOf(const Scene &scene) {
     f.environment = scene.environment.texture != kNoTexture;
     f.areaLights = std::any_of(scene.lights.begin(), scene.lights.end(),
                                [](const Light &l) { return l.radius > 0.0f; });
-    auto anyNormals = [](const std::vector<Triangle> &triangles) {
-        return std::any_of(triangles.begin(), triangles.end(),
-                           [](const Triangle &t) { return t.hasNormals; });
+    // Every record is some triangle's (nothing makes one without a triangle pointing to it).
+    auto anyNormals = [](const std::vector<TriangleShading> &shading) {
+        return std::any_of(shading.begin(), shading.end(),
+                           [](const TriangleShading &s) { return s.hasNormals; });
     };
-    f.vertexNormals = anyNormals(scene.triangles);
+    f.vertexNormals = anyNormals(scene.triangleShading);
     for (const MeshPrototype &m : scene.prototypes)
-        f.vertexNormals = f.vertexNormals || anyNormals(m.triangles);
+        f.vertexNormals = f.vertexNormals || anyNormals(m.shading);
     return f;
 }
 

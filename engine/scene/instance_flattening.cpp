@@ -2,25 +2,26 @@
 
 namespace prism {
 
-std::vector<Triangle> placedTriangles(const Scene &scene, const Instance &instance) {
-    std::vector<Triangle> placed = scene.prototypes.at(instance.prototype).triangles;
-    for (Triangle &t : placed) {
-        for (int c = 0; c < 3; ++c) {
-            t.p[c] = instance.toWorld(t.p[c]);
-            // A similarity turns normals as it turns positions (no inverse transpose needed).
-            if (t.hasNormals)
-                t.n[c] = glm::vec3(glm::normalize(instance.rotation * glm::dvec3(t.n[c])));
-        }
+MeshPrototype placedTriangles(const Scene &scene, const Instance &instance) {
+    MeshPrototype placed = scene.prototypes.at(instance.prototype);
+    for (Triangle &t : placed.triangles) {
+        for (glm::dvec3 &p : t.p)
+            p = instance.toWorld(p);
         if (instance.material != kOwnMaterials)
             t.material = uint32_t(instance.material);
     }
+    // A similarity turns normals as it turns positions (no inverse transpose needed).
+    for (TriangleShading &s : placed.shading)
+        if (s.hasNormals)
+            for (glm::vec3 &n : s.n)
+                n = glm::vec3(glm::normalize(instance.rotation * glm::dvec3(n)));
     return placed;
 }
 
 Scene flattenInstances(Scene scene) {
     for (const Instance &instance : scene.instances) {
-        std::vector<Triangle> placed = placedTriangles(scene, instance);
-        scene.triangles.insert(scene.triangles.end(), placed.begin(), placed.end());
+        MeshPrototype placed = placedTriangles(scene, instance);
+        appendTriangles(scene.triangles, scene.triangleShading, placed.triangles, placed.shading);
     }
     scene.instances.clear();
     scene.prototypes.clear();

@@ -7,8 +7,9 @@
 
 namespace prism {
 
-// The triangles of `instance`, placed (positions, and vertex normals turned with it).
-std::vector<Triangle> placedTriangles(const Scene &scene, const Instance &instance);
+// The triangles of `instance`, placed (positions, and vertex normals turned with it), with the
+// shading records they point to: its prototype, placed.
+MeshPrototype placedTriangles(const Scene &scene, const Instance &instance);
 
 // `scene` with every instance's triangles appended to Scene::triangles (where Scene::instances
 // puts them now) and no prototypes, instances or placement keys left.

@@ -78,11 +78,12 @@ MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &
 
     MeshImportResult result;
     std::vector<Triangle> triangles;
+    std::vector<TriangleShading> shading;
     std::vector<SmoothingTriangle> shapes; // with `smooth`: one per triangle, for its normals
     std::vector<uint32_t> welded =
         request.smoothCreaseDegrees ? weldedVertices(model) : std::vector<uint32_t>{};
-    // Sized once: growing a vector of a million 144-byte triangles copied each of them about
-    // twice more (issue 31).
+    // Sized once: growing a vector of a million triangles copied each of them about twice more
+    // (issue 31).
     size_t fanTriangles = 0;
     for (const ObjFace &face : model.faces)
         fanTriangles += face.cornerCount - 2;
@@ -106,20 +107,25 @@ MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &
                 ++result.degenerateDropped;
                 continue;
             }
-            t.hasNormals = t.hasUVs = true;
+            TriangleShading s;
+            s.hasNormals = s.hasUVs = true;
             for (int c = 0; c < 3; ++c) {
                 if (tri[c]->normal != kObjNoIndex)
-                    t.n[c] = normals[size_t(tri[c]->normal)];
-                t.hasNormals =
-                    t.hasNormals && tri[c]->normal != kObjNoIndex && t.n[c] != glm::vec3(0.0f);
+                    s.n[c] = normals[size_t(tri[c]->normal)];
+                s.hasNormals =
+                    s.hasNormals && tri[c]->normal != kObjNoIndex && s.n[c] != glm::vec3(0.0f);
                 if (tri[c]->uv != kObjNoIndex)
-                    t.uv[c] = model.uvs[size_t(tri[c]->uv)];
-                t.hasUVs = t.hasUVs && tri[c]->uv != kObjNoIndex;
+                    s.uv[c] = model.uvs[size_t(tri[c]->uv)];
+                s.hasUVs = s.hasUVs && tri[c]->uv != kObjNoIndex;
             }
-            if (!t.hasNormals)
-                t.n[0] = t.n[1] = t.n[2] = glm::vec3(0.0f);
-            if (!t.hasUVs)
-                t.uv[0] = t.uv[1] = t.uv[2] = glm::vec2(0.0f);
+            if (!s.hasNormals)
+                s.n[0] = s.n[1] = s.n[2] = glm::vec3(0.0f);
+            if (!s.hasUVs)
+                s.uv[0] = s.uv[1] = s.uv[2] = glm::vec2(0.0f);
+            if (s.hasNormals || s.hasUVs) {
+                t.shading = uint32_t(shading.size());
+                shading.push_back(s);
+            }
             t.material = material;
             checkTriangleLimit(sink.held + triangles.size() + 1, sink.maxTriangles);
             triangles.push_back(t);
@@ -136,17 +142,19 @@ MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &
         std::vector<std::array<glm::vec3, 3>> smooth =
             smoothVertexNormals(shapes, *request.smoothCreaseDegrees);
         for (size_t i = 0; i < triangles.size(); ++i)
-            if (!triangles[i].hasNormals) {
+            if (TriangleShading &s = shadingFor(triangles[i], shading); !s.hasNormals) {
                 for (int c = 0; c < 3; ++c)
-                    triangles[i].n[c] = smooth[i][size_t(c)];
-                triangles[i].hasNormals = true;
+                    s.n[c] = smooth[i][size_t(c)];
+                s.hasNormals = true;
             }
     }
     result.triangles = triangles.size();
-    if (sink.triangles.empty())
+    if (sink.triangles.empty() && sink.shading.empty()) {
         sink.triangles = std::move(triangles);
-    else
-        sink.triangles.insert(sink.triangles.end(), triangles.begin(), triangles.end());
+        sink.shading = std::move(shading);
+    } else {
+        appendTriangles(sink.triangles, sink.shading, triangles, shading);
+    }
     return result;
 }
 

@@ -31,8 +31,9 @@ struct MeshRequest {
 // they count against the scene's triangle limit, on top of the `held` it has already.
 struct TriangleSink {
     std::vector<Triangle> &triangles;
-    uint64_t held = 0;         // the scene's triangles and its prototypes'
-    uint64_t maxTriangles = 0; // SceneLimits::maxTriangles
+    std::vector<TriangleShading> &shading; // the records `triangles` point to
+    uint64_t held = 0;                     // the scene's triangles and its prototypes'
+    uint64_t maxTriangles = 0;             // SceneLimits::maxTriangles
 };
 
 struct MeshImportResult {
@@ -42,7 +43,8 @@ struct MeshImportResult {
 
 class MeshImporter {
 public:
-    // Appends the model's triangles to `sink.triangles`, and the MTL materials and textures
+    // Appends the model's triangles to `sink.triangles` (their normals and texture coordinates
+    // to `sink.shading`), and the MTL materials and textures
     // they use to `scene`; MTL problems become warnings. Throws LineError if the transform
     // makes a vertex non-finite, or the scene would hold more than sink.maxTriangles triangles.
     MeshImportResult import(const ObjModel &model, const MeshRequest &request, Scene &scene,

@@ -3,6 +3,7 @@
 // describes, after parsing, defaults and mesh transforms. No Vulkan here.
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -80,14 +81,45 @@ struct Plane {
     uint32_t material = 0;
 };
 
-struct Triangle {
-    glm::dvec3 p[3];   // counter-clockwise front face; Ng = (p1 - p0) x (p2 - p0)
+// A triangle's vertex normals and texture coordinates. Kept beside the triangles, in a list of
+// their owner's that a triangle points into, rather than in every triangle: most big meshes have
+// neither, and a triangle with them inline took 144 bytes where its positions need 72 (issue 31).
+struct TriangleShading {
     glm::vec3 n[3]{};  // vertex normals, valid when hasNormals
     glm::vec2 uv[3]{}; // texture coordinates, valid when hasUVs
     bool hasNormals = false;
     bool hasUVs = false;
-    uint32_t material = 0;
 };
+
+constexpr uint32_t kNoShading = ~0u;
+
+struct Triangle {
+    glm::dvec3 p[3]; // counter-clockwise front face; Ng = (p1 - p0) x (p2 - p0)
+    uint32_t material = 0;
+    uint32_t shading = kNoShading; // index into its owner's shading list; none: flat, no UVs
+};
+static_assert(sizeof(Triangle) == 80);
+
+// The record `t` points to in `shading` (its owner's list), or null for a flat triangle
+// without texture coordinates.
+inline const TriangleShading *shadingOf(const Triangle &t,
+                                        const std::vector<TriangleShading> &shading) {
+    return t.shading == kNoShading ? nullptr : &shading[t.shading];
+}
+
+// The record `t` points to in `shading`, made (empty) if it has none yet.
+inline TriangleShading &shadingFor(Triangle &t, std::vector<TriangleShading> &shading) {
+    if (t.shading == kNoShading) {
+        t.shading = uint32_t(shading.size());
+        shading.emplace_back();
+    }
+    return shading[t.shading];
+}
+
+// Appends the triangles `from` (whose records are in `fromShading`) to `to`, their records to
+// `toShading`, the appended triangles pointing to them there.
+void appendTriangles(std::vector<Triangle> &to, std::vector<TriangleShading> &toShading,
+                     std::span<const Triangle> from, std::span<const TriangleShading> fromShading);
 
 // A mesh loaded once by `mesh PATH ... as NAME` and drawn by `place NAME` lines
 // (docs/scene-format.md, "Instances"): its triangles in its own space, which the loader centres
@@ -95,6 +127,13 @@ struct Triangle {
 struct MeshPrototype {
     std::string name;
     std::vector<Triangle> triangles;
+    std::vector<TriangleShading> shading; // the records its triangles point to
+
+    // Triangle i's normals and texture coordinates (an empty record where it has none).
+    TriangleShading shadingOf(size_t i) const {
+        const TriangleShading *s = prism::shadingOf(triangles[i], shading);
+        return s ? *s : TriangleShading{};
+    }
 };
 
 constexpr int32_t kOwnMaterials = -1; // an instance keeps its mesh's materials
@@ -175,10 +214,17 @@ struct Scene {
     std::vector<Texture> textures;
     std::vector<Sphere> spheres;
     std::vector<Plane> planes;
-    std::vector<Triangle> triangles;       // in scene space
-    std::vector<MeshPrototype> prototypes; // drawn only where instances place them
+    std::vector<Triangle> triangles;              // in scene space
+    std::vector<TriangleShading> triangleShading; // the records Scene::triangles point to
+    std::vector<MeshPrototype> prototypes;        // drawn only where instances place them
     std::vector<Instance> instances;
     std::vector<std::string> warnings; // "FILE:LINE: warning: ..." lines, in order
+
+    // Triangle i's normals and texture coordinates (an empty record where it has none).
+    TriangleShading shadingOf(size_t i) const {
+        const TriangleShading *s = prism::shadingOf(triangles[i], triangleShading);
+        return s ? *s : TriangleShading{};
+    }
 
     // Primitives that live in the grid (their ids: scene/primitive_ids.h); an instance is one,
     // its prototype's triangles live in a grid of their own.

@@ -261,7 +261,7 @@ void checkNewPrototypeName(const SceneBuilder &builder, const std::string &name)
 // prototype that only `place` lines draw. One without triangles is remembered (so that its
 // `place` lines can say so) but not added to Scene::prototypes.
 void definePrototype(SceneBuilder &builder, const std::string &name,
-                     std::vector<Triangle> triangles) {
+                     std::vector<Triangle> triangles, std::vector<TriangleShading> shading) {
     PrototypeEntry entry;
     entry.line = builder.line;
     if (!triangles.empty()) {
@@ -279,7 +279,8 @@ void definePrototype(SceneBuilder &builder, const std::string &name,
         entry.boxMax = hi - entry.centre;
         entry.index = uint32_t(builder.scene.prototypes.size());
         builder.prototypeTriangles += triangles.size();
-        builder.scene.prototypes.push_back(MeshPrototype{name, std::move(triangles)});
+        builder.scene.prototypes.push_back(
+            MeshPrototype{name, std::move(triangles), std::move(shading)});
     }
     builder.prototypeByName.emplace(name, entry);
 }
@@ -309,14 +310,17 @@ void mesh(SceneBuilder &builder, const DirectiveArgs &args) {
     builder.scene.warnings.insert(builder.scene.warnings.end(), model.warnings.begin(),
                                   model.warnings.end());
     std::vector<Triangle> prototype;
-    TriangleSink sink{as ? prototype : builder.scene.triangles, builder.heldTriangles(),
-                      builder.limits.maxTriangles};
+    std::vector<TriangleShading> prototypeShading;
+    TriangleSink sink{as ? prototype : builder.scene.triangles,
+                      as ? prototypeShading : builder.scene.triangleShading,
+                      builder.heldTriangles(), builder.limits.maxTriangles};
     MeshImportResult result =
         builder.meshes.import(model, request, builder.scene, builder.textures, sink);
     warnDropped(builder, int(result.degenerateDropped),
                 " in '" + displayPath(request.objPath) + "'");
     if (as)
-        definePrototype(builder, as->values[0]->text, std::move(prototype));
+        definePrototype(builder, as->values[0]->text, std::move(prototype),
+                        std::move(prototypeShading));
 }
 
 // `place ID [NAME] ...`: one instance of the prototype (scene/placement.h: placedInstance). The

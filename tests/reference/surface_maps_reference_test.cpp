@@ -73,7 +73,7 @@ TEST(SurfaceMaps, SphereFrameFollowsItsTextureCoordinates) {
 TEST(SurfaceMaps, TriangleFrameFromUVsKeepsMirroredLayouts) {
     Scene scene = test::sceneWithDefaultMaterial();
     test::addTriangle(scene, {0, 0, 0}, {2, 0, 0}, {0, 2, 0}, 0); // faces +z
-    Triangle &t = scene.triangles.back();
+    TriangleShading &t = shadingFor(scene.triangles.back(), scene.triangleShading);
     t.hasUVs = true;
     t.uv[0] = {0, 1};
     t.uv[1] = {1, 1}; // u along +x

@@ -58,7 +58,7 @@ TEST(SurfaceAt, TriangleInterpolatesNormalsAndUVs) {
     EXPECT_NEAR(s.uv.x, 0.25, 1e-15) << "no vt: barycentric (b1, b2)";
     EXPECT_NEAR(s.uv.y, 0.5, 1e-15);
 
-    Triangle &t = scene.triangles[0];
+    TriangleShading &t = shadingFor(scene.triangles[0], scene.triangleShading);
     t.hasNormals = true;
     t.n[0] = {0, 0, 1};
     t.n[1] = {1, 0, 1};

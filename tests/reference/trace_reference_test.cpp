@@ -235,7 +235,7 @@ Scene leaningTriangle(const Material &m) {
     Scene scene = test::sceneWithDefaultMaterial();
     uint32_t id = test::addMaterial(scene, m);
     test::addTriangle(scene, {-2, -2, 0}, {2, -2, 0}, {0, 2, 0}, id);
-    Triangle &t = scene.triangles[0];
+    TriangleShading &t = shadingFor(scene.triangles[0], scene.triangleShading);
     t.hasNormals = true;
     t.n[0] = t.n[1] = t.n[2] = glm::normalize(glm::vec3(0.3f, 0.0f, 1.0f));
     scene.background = {0.0f, 0.0f, 0.0f};
@@ -253,14 +253,14 @@ TEST(Shading, SmoothTriangleIsLitByItsInterpolatedNormal) {
     RayCounts rays;
     glm::dvec3 value =
         reference::traceRadiance(scene, {{0.0, 0.0, 1.0}, {0.0, 0.0, -1.0}}, {0, 0}, 1, rays);
-    glm::dvec3 n = glm::normalize(glm::dvec3(glm::vec3(scene.triangles[0].n[0])));
+    glm::dvec3 n = glm::normalize(glm::dvec3(glm::vec3(scene.shadingOf(0).n[0])));
     double nDotL = glm::dot(n, glm::normalize(glm::dvec3(3, 0, 3))); // 0.88; (0, 0, 1) gives 0.71
     expectNear(value, glm::dvec3(double(m.diffuse) * nDotL), 1e-12);
 }
 
 TEST(Shading, SmoothMirrorReflectsAboutItsInterpolatedNormal) {
     Scene scene = leaningTriangle(test::opticalMaterial("mirror", 1.0f, 0.0f));
-    glm::dvec3 n = glm::normalize(glm::dvec3(glm::vec3(scene.triangles[0].n[0])));
+    glm::dvec3 n = glm::normalize(glm::dvec3(glm::vec3(scene.shadingOf(0).n[0])));
     glm::dvec3 mirrored = glm::reflect(glm::dvec3(0, 0, -1), n);
     // A self-lit red sphere where the mirrored ray goes (the flat normal sends it back up +z).
     uint32_t id = addSelfLitRed(scene);

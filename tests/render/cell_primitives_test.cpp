@@ -169,7 +169,8 @@ TEST(CellTriangles, ChosenOnlyWhereTheCellsListTrianglesAndTheyFit) {
     withSphere.spheres.push_back(Sphere{{0.0, 3.0, 0.0}, 0.5f, 0});
     EXPECT_FALSE(chooseFeatures(withSphere, buildGrid(withSphere), options).cellTriangles);
     Scene withInstance = scene;
-    withInstance.prototypes.push_back(MeshPrototype{"copy", scene.triangles});
+    withInstance.prototypes.push_back(
+        MeshPrototype{"copy", scene.triangles, scene.triangleShading});
     withInstance.instances.push_back(Instance{});
     EXPECT_FALSE(chooseFeatures(withInstance, grid, options).cellTriangles);
 }

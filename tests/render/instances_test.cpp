@@ -32,7 +32,7 @@ MeshPrototype octahedraPrototype(uint32_t smoothMaterial, uint32_t flatMaterial)
     Scene shapes;
     addSmoothOctahedron(shapes, {-0.35f, 0.0f, 0.0f}, 0.4f, smoothMaterial);
     addOctahedron(shapes, {0.45f, 0.1f, 0.1f}, 0.3f, flatMaterial);
-    return MeshPrototype{"octahedra", shapes.triangles};
+    return MeshPrototype{"octahedra", shapes.triangles, shapes.triangleShading};
 }
 
 Instance placed(double scale, glm::dmat3 rotation, glm::dvec3 translation,
@@ -147,7 +147,7 @@ TEST_F(InstancedRender, AHitPastTheCellWaitsForNearerOnes) {
     addTriangle(shapes, nearLeft, farRight, farLeft, ramp);
     for (float z : {2.0f, 0.0f, -2.0f}) // standing on the ramp (its height at z: 0.1 (4 - z))
         addOctahedron(shapes, {0.3f * z, 0.1f * (4.0f - z) + 0.35f, z}, 0.35f, block);
-    scene.prototypes.push_back(MeshPrototype{"ramp", shapes.triangles});
+    scene.prototypes.push_back(MeshPrototype{"ramp", shapes.triangles, shapes.triangleShading});
     scene.instances.push_back(placed(1.0, axisRotation(1, 10.0), {0.0, 0.0, 0.0}));
     scene.camera.eye = {0.0, 1.2, 7.0};
     scene.camera.look = {0.0, 0.4, -1.0};
@@ -188,7 +188,7 @@ TEST_F(InstancedRender, RaysLeaveAnInstanceWhoseCentreIsFarAway) {
     for (Triangle &t : shapes.triangles)
         for (glm::dvec3 &p : t.p)
             p -= centre;
-    scene.prototypes.push_back(MeshPrototype{"floor", shapes.triangles});
+    scene.prototypes.push_back(MeshPrototype{"floor", shapes.triangles, shapes.triangleShading});
     scene.instances.push_back(placed(1.0, glm::dmat3(1.0), centre));
     scene.camera.eye = {1.0, 0.6, 0.3};
     scene.camera.look = {2.5, 0.0, 0.0};

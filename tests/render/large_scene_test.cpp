@@ -63,7 +63,7 @@ Scene boardScene() {
                                         : glm::normalize(glm::vec3(0.3f * float(quads % 5), 0, 1));
                 for (auto [p, q, r] : {std::array{a, b, c}, std::array{a, c, d}}) {
                     addTriangle(scene, p, q, r, material);
-                    Triangle &t = scene.triangles.back();
+                    TriangleShading &t = shadingFor(scene.triangles.back(), scene.triangleShading);
                     t.hasNormals = t.hasUVs = true;
                     for (int k = 0; k < 3; ++k) {
                         t.n[k] = tilt;

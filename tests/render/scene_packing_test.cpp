@@ -85,7 +85,7 @@ TEST(ScenePacking, ShadingArrayOnlyWhereTheTracerReadsIt) {
     EXPECT_FALSE(packScene(scene, grid).triangleShading);
     std::vector<gpu::GpuTriangleShading> none;
     writeTriangleShading(packScene(scene, grid), none); // nothing to write, and no error
-    scene.triangles[3].hasUVs = true;
+    shadingFor(scene.triangles[3], scene.triangleShading).hasUVs = true;
     PackedScene packed = packScene(scene, grid);
     ASSERT_TRUE(packed.triangleShading);
     std::vector<gpu::GpuTriangleShading> shading(scene.triangles.size());
@@ -134,7 +134,7 @@ TEST(ScenePacking, AdaptiveCellBoxesCarryTheirFirstPrimitive) {
 // as the device reads them: float positions, the material in the first vertex's w.
 TEST(ScenePacking, TrianglesWrittenFromTheSceneInListOrder) {
     Scene scene = stabilityScene();
-    scene.prototypes.push_back(MeshPrototype{"copy", scene.triangles});
+    scene.prototypes.push_back(MeshPrototype{"copy", scene.triangles, scene.triangleShading});
     scene.prototypes[0].triangles[1].material = 2;
     scene.instances.push_back(Instance{});
     Grid grid = buildGrid(scene, {});
@@ -172,7 +172,8 @@ TEST(ScenePacking, GridArraysViewedUnlessChanged) {
     EXPECT_EQ(moved.cellStart.data(), grid.cellStart.data());
 
     Scene withInstance = scene;
-    withInstance.prototypes.push_back(MeshPrototype{"copy", scene.triangles});
+    withInstance.prototypes.push_back(
+        MeshPrototype{"copy", scene.triangles, scene.triangleShading});
     withInstance.instances.push_back(Instance{});
     Grid instanced = buildGrid(withInstance, {});
     PackedScene appended = packScene(withInstance, instanced);

@@ -90,10 +90,11 @@ Scene sceneOf(const Material &material) {
     scene.spheres.push_back(Sphere{{-1.3, 0.8, 0.3}, 0.8f, m});
     addSmoothOctahedron(scene, {1.2f, 0.9f, 0.2f}, 0.9f, m);
     addTriangle(scene, {-2.5f, 0.0f, -1.5f}, {2.5f, 0.0f, -1.5f}, {2.5f, 2.5f, -1.5f}, m);
-    scene.triangles.back().hasUVs = true;
-    scene.triangles.back().uv[0] = {0.0f, 0.0f};
-    scene.triangles.back().uv[1] = {2.0f, 0.0f};
-    scene.triangles.back().uv[2] = {2.0f, 1.0f};
+    TriangleShading &shading = shadingFor(scene.triangles.back(), scene.triangleShading);
+    shading.hasUVs = true;
+    shading.uv[0] = {0.0f, 0.0f};
+    shading.uv[1] = {2.0f, 0.0f};
+    shading.uv[2] = {2.0f, 1.0f};
     addTriangle(scene, {-2.5f, 0.0f, -1.5f}, {-2.5f, 2.5f, -1.5f}, {2.5f, 2.5f, -1.5f}, m);
     scene.lights.push_back(Light{{-3.0, 4.0, 3.0}, {0.9f, 0.9f, 0.9f}, 0.0f});
     scene.lights.push_back(Light{{3.0, 1.2, 2.0}, {0.5f, 0.45f, 0.4f}, 0.0f});
@@ -162,7 +163,7 @@ Scene glassObjectsScene(const Material &glass) {
 
 TEST_F(SurfaceMaps, SmoothGlassMatchesTheReference) {
     Scene scene = glassObjectsScene(glassMaterial());
-    ASSERT_TRUE(scene.triangles[0].hasNormals);
+    ASSERT_TRUE(scene.shadingOf(0).hasNormals);
     expectMatchesReference(scene);
 }
 
@@ -174,7 +175,8 @@ TEST_F(SurfaceMaps, BumpMappedGlassMatchesTheReference) {
     std::vector<float> bumped = expectMatchesReference(scene);
     // The bumps must show through the glass: against the unmapped glass, many pixels change.
     ImageDifference d = compareImages(
-        bumped, renderGpu(context(), glassObjectsScene(glassMaterial()), kWidth, kHeight).image.rgba,
+        bumped,
+        renderGpu(context(), glassObjectsScene(glassMaterial()), kWidth, kHeight).image.rgba,
         kMatchPixelThreshold);
     EXPECT_GE(d.differingFraction(), 0.05) << describe(d);
 }

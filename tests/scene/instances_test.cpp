@@ -137,9 +137,9 @@ TEST(Instances, TheMeshLinesOwnTransformAndSmoothingGoIntoThePrototype) {
             p = glm::dvec3(1, 1, 1) + rotation * p;
     expectPlacedLike(scene, scene.instances[0], expected);
     for (size_t i = 0; i < prototype.triangles.size(); ++i) {
-        EXPECT_TRUE(prototype.triangles[i].hasNormals);
+        EXPECT_TRUE(prototype.shadingOf(i).hasNormals);
         for (int c = 0; c < 3; ++c) // normals are not moved by the centring
-            EXPECT_EQ(prototype.triangles[i].n[c], mesh.triangles[i].n[c]);
+            EXPECT_EQ(prototype.shadingOf(i).n[c], mesh.shadingOf(i).n[c]);
     }
 }
 

@@ -55,7 +55,7 @@ TEST(MeshImporter, VertexNormalsAreTransformedAndNormalised) {
     Scene scene =
         loadScene(dir.write("s.scene", "mesh n.obj scale 5 rotate x 90 translate 9 9 9\n"));
     ASSERT_EQ(scene.triangles.size(), 1u);
-    const Triangle &t = scene.triangles[0];
+    TriangleShading t = scene.shadingOf(0);
     ASSERT_TRUE(t.hasNormals);
     EXPECT_EQ(t.n[0], glm::vec3(0, -1, 0)); // z -> -y under x 90
     EXPECT_FLOAT_EQ(t.n[2].y, -std::sqrt(0.5f));
@@ -71,15 +71,15 @@ TEST(MeshImporter, NormalsAndUvsOnlyWhenAllThreeCornersHaveThem) {
                        "f 1/1/2 2/2/1 3/3/1\n");    // a zero normal: no vertex normals
     Scene scene = loadScene(dir.write("s.scene", "mesh q.obj\n"));
     ASSERT_EQ(scene.triangles.size(), 3u);
-    EXPECT_TRUE(scene.triangles[0].hasUVs);
-    EXPECT_TRUE(scene.triangles[0].hasNormals);
-    EXPECT_EQ(scene.triangles[0].uv[2], glm::vec2(1, 1));
-    EXPECT_EQ(scene.triangles[0].n[1], glm::vec3(0, 0, 1));
-    EXPECT_FALSE(scene.triangles[1].hasUVs);
-    EXPECT_TRUE(scene.triangles[1].hasNormals);
+    EXPECT_TRUE(scene.shadingOf(0).hasUVs);
+    EXPECT_TRUE(scene.shadingOf(0).hasNormals);
+    EXPECT_EQ(scene.shadingOf(0).uv[2], glm::vec2(1, 1));
+    EXPECT_EQ(scene.shadingOf(0).n[1], glm::vec3(0, 0, 1));
+    EXPECT_FALSE(scene.shadingOf(1).hasUVs);
+    EXPECT_TRUE(scene.shadingOf(1).hasNormals);
     EXPECT_EQ(scene.triangles[1].p[2], glm::dvec3(0, 1, 0));
-    EXPECT_TRUE(scene.triangles[2].hasUVs);
-    EXPECT_FALSE(scene.triangles[2].hasNormals);
+    EXPECT_TRUE(scene.shadingOf(2).hasUVs);
+    EXPECT_FALSE(scene.shadingOf(2).hasNormals);
 }
 
 // `f 1//1 2//2 3//3` after the vn lines were commented out: the mesh loads, its triangles use
@@ -90,8 +90,9 @@ TEST(MeshImporter, FacesNamingMissingNormalsLoadWithAWarning) {
                        "f 1//1 2//1 3//1\nf 2//1 4//1 3//1\n");
     Scene scene = loadScene(dir.write("s.scene", "mesh n.obj\n"));
     ASSERT_EQ(scene.triangles.size(), 2u);
-    for (const Triangle &t : scene.triangles)
-        EXPECT_FALSE(t.hasNormals);
+    for (size_t i = 0; i < scene.triangles.size(); ++i)
+        EXPECT_FALSE(scene.shadingOf(i).hasNormals);
+    EXPECT_TRUE(scene.triangleShading.empty()) << "no record where a triangle has nothing in it";
     ASSERT_EQ(scene.warnings.size(), 1u);
     EXPECT_NE(scene.warnings[0].find("n.obj:6: warning: face normal index 1 is out of range"),
               std::string::npos)

@@ -51,8 +51,7 @@ TEST(ModelAssets, CornellBoxCrlfNegativeIndicesAndMaterials) {
             EXPECT_EQ(m.ior, 1.5f);
         }
     for (const Triangle &t : scene.triangles) {
-        EXPECT_FALSE(t.hasNormals);
-        EXPECT_FALSE(t.hasUVs);
+        EXPECT_EQ(t.shading, kNoShading);
         EXPECT_NE(t.material, 0u);
     }
 }
@@ -76,11 +75,12 @@ TEST(ModelAssets, SpiderBackslashTexturesAndDegenerateTriangles) {
     for (size_t i = 1; i < scene.materials.size(); ++i)
         EXPECT_NE(scene.materials[i].texture, kNoTexture) << scene.materials[i].name;
     std::set<uint32_t> used;
-    for (const Triangle &t : scene.triangles) {
-        used.insert(t.material);
-        EXPECT_TRUE(t.hasUVs);
-        EXPECT_TRUE(t.hasNormals);
-        EXPECT_NEAR(glm::length(t.n[0]), 1.0f, 1e-6f);
+    for (size_t i = 0; i < scene.triangles.size(); ++i) {
+        used.insert(scene.triangles[i].material);
+        TriangleShading s = scene.shadingOf(i);
+        EXPECT_TRUE(s.hasUVs);
+        EXPECT_TRUE(s.hasNormals);
+        EXPECT_NEAR(glm::length(s.n[0]), 1.0f, 1e-6f);
     }
     EXPECT_EQ(used, (std::set<uint32_t>{1, 2, 3, 4}));
 }
@@ -90,10 +90,10 @@ TEST(ModelAssets, SpotHasUvsEverywhereAndTakesATextureFromAMaterialLine) {
                               "mesh spot/spot_triangulated.obj cow rotate y 180\n");
     EXPECT_TRUE(scene.warnings.empty()) << allWarnings(scene);
     ASSERT_EQ(scene.triangles.size(), 5856u);
-    for (const Triangle &t : scene.triangles) {
-        EXPECT_TRUE(t.hasUVs);
-        EXPECT_FALSE(t.hasNormals);
-        EXPECT_EQ(t.material, 1u);
+    for (size_t i = 0; i < scene.triangles.size(); ++i) {
+        EXPECT_TRUE(scene.shadingOf(i).hasUVs);
+        EXPECT_FALSE(scene.shadingOf(i).hasNormals);
+        EXPECT_EQ(scene.triangles[i].material, 1u);
     }
     ASSERT_EQ(scene.textures.size(), 1u);
     EXPECT_EQ(scene.textures[0].width, 1024);

@@ -210,13 +210,14 @@ TEST(ObjCache, SceneFromTheCacheHasTheSameTriangles) {
         ASSERT_EQ(s->triangles.size(), parsed.triangles.size());
         for (size_t i = 0; i < parsed.triangles.size(); ++i) {
             const Triangle &a = s->triangles[i], &b = parsed.triangles[i];
+            TriangleShading as = s->shadingOf(i), bs = parsed.shadingOf(i);
             for (int k = 0; k < 3; ++k) {
                 EXPECT_EQ(a.p[k], b.p[k]);
-                EXPECT_EQ(a.n[k], b.n[k]);
-                EXPECT_EQ(a.uv[k], b.uv[k]);
+                EXPECT_EQ(as.n[k], bs.n[k]);
+                EXPECT_EQ(as.uv[k], bs.uv[k]);
             }
-            EXPECT_EQ(a.hasNormals, b.hasNormals);
-            EXPECT_EQ(a.hasUVs, b.hasUVs);
+            EXPECT_EQ(as.hasNormals, bs.hasNormals);
+            EXPECT_EQ(as.hasUVs, bs.hasUVs);
             EXPECT_EQ(a.material, b.material);
         }
         EXPECT_EQ(s->warnings, parsed.warnings);

@@ -41,10 +41,11 @@ TEST(SceneFormatPage, ItsMeshLineLoadsFromTheScenesFolder) {
     ASSERT_NE(at, std::string::npos);
     size_t end = text.find('`', at + 1);
     ASSERT_NE(end, std::string::npos);
-    std::string scene = "material red color 0.9 0.1 0.1\n" + text.substr(at + 1, end - at - 1) + "\n";
+    std::string scene =
+        "material red color 0.9 0.1 0.1\n" + text.substr(at + 1, end - at - 1) + "\n";
     Scene loaded = parseScene(scene, std::string(PRISM_ASSETS_DIR) + "/scenes/page.scene");
-    EXPECT_EQ(loaded.triangles.size(), 4968u); // the bunny
-    EXPECT_TRUE(loaded.triangles[0].hasNormals); // `smooth`
+    EXPECT_EQ(loaded.triangles.size(), 4968u);   // the bunny
+    EXPECT_TRUE(loaded.shadingOf(0).hasNormals); // `smooth`
 }
 
 } // namespace

@@ -146,8 +146,7 @@ TEST(SceneParser, TriangleKeepsItsWinding) {
     EXPECT_EQ(t.p[0], glm::dvec3(0, 0, 0));
     EXPECT_EQ(t.p[1], glm::dvec3(1, 0, 0));
     EXPECT_EQ(t.p[2], glm::dvec3(0, 1, 0));
-    EXPECT_FALSE(t.hasNormals);
-    EXPECT_FALSE(t.hasUVs);
+    EXPECT_EQ(t.shading, kNoShading);
 }
 
 TEST(SceneParser, ZeroAreaTrianglesAreDroppedWithAWarning) {

@@ -69,17 +69,17 @@ TEST(VertexNormals, SmoothMeshLineGivesUnitNormalsAndKeepsTheFilesOwn) {
     Scene soft = loadScene(dir.write("b.scene", "mesh p.obj smooth 120 translate 0 1 0\n"));
     Scene sharp = loadScene(dir.write("c.scene", "mesh p.obj smooth\n"));
     ASSERT_EQ(soft.triangles.size(), 5u);
-    EXPECT_FALSE(flat.triangles[0].hasNormals);
-    EXPECT_TRUE(soft.triangles[0].hasNormals);
-    expectNear(soft.triangles[0].n[0], glm::vec3(0, 1, 0)); // the apex, by symmetry
-    EXPECT_EQ(soft.triangles[4].n[0], glm::vec3(0, 0, 1));  // the file's own normal stays
+    EXPECT_FALSE(flat.shadingOf(0).hasNormals);
+    EXPECT_TRUE(soft.shadingOf(0).hasNormals);
+    expectNear(soft.shadingOf(0).n[0], glm::vec3(0, 1, 0)); // the apex, by symmetry
+    EXPECT_EQ(soft.shadingOf(4).n[0], glm::vec3(0, 0, 1));  // the file's own normal stays
     EXPECT_EQ(soft.triangles[0].p[0], glm::dvec3(0, 2, 0)); // keys in any order
-    for (const Triangle &tri : sharp.triangles)             // 60 degrees: every edge is a crease
-        for (const glm::vec3 &n : tri.n)
+    for (size_t i = 0; i < sharp.triangles.size(); ++i)     // 60 degrees: every edge is a crease
+        for (const glm::vec3 &n : sharp.shadingOf(i).n)
             EXPECT_NEAR(glm::length(n), 1.0f, 1e-6f);
     glm::dvec3 e1 = sharp.triangles[0].p[1] - sharp.triangles[0].p[0];
     glm::dvec3 e2 = sharp.triangles[0].p[2] - sharp.triangles[0].p[0];
-    expectNear(sharp.triangles[0].n[0], glm::vec3(glm::normalize(glm::cross(e1, e2))));
+    expectNear(sharp.shadingOf(0).n[0], glm::vec3(glm::normalize(glm::cross(e1, e2))));
 }
 
 TEST(VertexNormals, BadCreaseAnglesAreErrorsOfTheMeshLine) {

@@ -80,10 +80,10 @@ inline void addSmoothOctahedron(Scene &scene, glm::vec3 center, float radius, ui
     size_t first = scene.triangles.size();
     addOctahedron(scene, center, radius, material);
     for (size_t i = first; i < scene.triangles.size(); ++i) {
-        Triangle &t = scene.triangles[i];
+        TriangleShading &t = shadingFor(scene.triangles[i], scene.triangleShading);
         t.hasNormals = t.hasUVs = true;
         for (int c = 0; c < 3; ++c) {
-            glm::vec3 n = glm::normalize(glm::vec3(t.p[c]) - center);
+            glm::vec3 n = glm::normalize(glm::vec3(scene.triangles[i].p[c]) - center);
             t.n[c] = n;
             t.uv[c] = {0.5f + 0.4f * n.x + 0.1f * n.z, 0.5f + 0.4f * n.y - 0.1f * n.z};
         }

@@ -116,7 +116,7 @@ EmbreeBaseline::EmbreeBaseline(const Scene &scene, uint32_t width, uint32_t heig
     // Instances as plain triangles: the baseline is Embree's flat BVH over the same surfaces.
     std::vector<Triangle> triangles = scene.triangles;
     for (const Instance &instance : scene.instances) {
-        std::vector<Triangle> placed = placedTriangles(scene, instance);
+        std::vector<Triangle> placed = placedTriangles(scene, instance).triangles;
         triangles.insert(triangles.end(), placed.begin(), placed.end());
     }
     for (const Triangle &t : triangles)
