@@ -3,7 +3,9 @@
 // level by level, into 2^d parts per axis with d chosen by how many primitives the cell holds,
 // until a cell holds few primitives or the levels run out. Every cell lists exactly the
 // primitives that overlap its box (with the binner's slack), so a walk that accepts a hit only
-// inside the current cell's box finds what brute force finds.
+// inside the current cell's box finds what brute force finds. A lean grid's cells list more:
+// every primitive whose bounding box came down to them, without the exact tests (the walk
+// allows a superset; it tests a few more primitives a ray).
 #include "accel/finite_primitives.h"
 #include "accel/grid.h"
 

@@ -38,8 +38,9 @@ struct GridOptions {
     // image"). Full: the adaptive grid's cells grown over their neighbours
     // (accel/cell_expansion.h), and each cell's triangles copied into its list for the tracer
     // (render/tracer_features.h): fewest steps and loads a ray. Lean: cells as built, lists of
-    // primitive ids: half the build and a third of a big mesh's device memory, each ray 1.1-1.2x
-    // slower at 100k triangles, 1.6-1.7x at 1M. Auto: lean where the camera samples the grid will
+    // primitive ids by bounding box (no exact tests): a quarter of the build and a third of a
+    // big mesh's device memory, each ray 1.1-1.2x slower at 100k triangles, 1.6-1.7x at 1M with
+    // exact lists and 5-11% more without. Auto: lean where the camera samples the grid will
     // serve (cameraSamples) are fewer than kLeanBelowSamplesPerPrimitive a primitive; 0 means
     // unknown, and many (a viewer, a Python session): full.
     enum class Effort { Auto, Full, Lean };

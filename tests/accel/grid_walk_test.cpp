@@ -187,6 +187,20 @@ TEST(AdaptiveGridWalk, FindsEveryCrossingInAClusterInARoom) {
     checkRays(scene, g, 6, 1500, 700.0); // from anywhere in and around the room
 }
 
+// A lean grid's leaves list by bounding box (more than what overlaps them): the walk still
+// finds every crossing and the closest hit, since it accepts a hit once it has reached its cell.
+TEST(AdaptiveGridWalk, LeanGridFindsEveryCrossing) {
+    GridOptions lean = parseGridOption("adaptive");
+    lean.effort = GridOptions::Effort::Lean;
+    Scene room = test::clusterInARoom(36, 600, 100);
+    Grid g = buildGrid(room, lean);
+    ASSERT_TRUE(g.lean);
+    checkRays(room, g, 7, 1500, 1.5);
+    checkRays(room, g, 8, 1500, 700.0);
+    Scene random = test::randomSpheresAndTriangles(37, 200, 400);
+    checkRays(random, buildGrid(random, lean), 9, 3000);
+}
+
 // Shards: a few triangles as long as the scene, thin and on the slant, through a cluster of
 // tiny ones; they sit in every leaf along their paths, beside the cluster's triangles.
 TEST(AdaptiveGridWalk, FindsEveryCrossingAmongHugeAndTinyTriangles) {
