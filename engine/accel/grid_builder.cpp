@@ -73,8 +73,9 @@ Lattice wholeGrid(const Grid &grid) {
 
 namespace {
 
-Grid buildOneGrid(const Scene &scene, const GridOptions &options) {
-    FinitePrimitives finite(scene);
+// The grid's box, resolution and cell size for `options`, no cells yet: what a walk through it
+// needs (grid_choice.h prices a regular grid by the cells its walks would cross).
+Grid layOutGrid(const FinitePrimitives &finite, const GridOptions &options) {
     Aabb bounds = paddedBounds(finiteBounds(finite));
     Grid grid;
     grid.boundsMin = glm::vec3(bounds.min);
@@ -110,7 +111,13 @@ Grid buildOneGrid(const Scene &scene, const GridOptions &options) {
         throw Error("grid of " + std::to_string(grid.topCellCount()) + " cells is more than " +
                     std::to_string(kMaxGridCells));
     grid.cellSize = (grid.boundsMax - grid.boundsMin) / glm::vec3(grid.resolution);
+    return grid;
+}
 
+Grid buildOneGrid(const Scene &scene, const GridOptions &options) {
+    FinitePrimitives finite(scene);
+    Grid grid = layOutGrid(finite, options);
+    uint32_t primitives = finite.count();
     if (options.mode == GridOptions::Mode::Off) {
         grid.cellStart = {0u, uint32_t(primitives)};
         grid.cellPrimitives.resize(primitives);
@@ -168,7 +175,12 @@ Grid buildGridOverMeshGrids(const Scene &scene, const GridOptions &options,
     };
     if (options.mode != GridOptions::Mode::Auto)
         return build(options.mode);
-    return chooseGrid(scene, build);
+    auto regularLayout = [&] {
+        GridOptions regular = options;
+        regular.mode = GridOptions::Mode::Regular;
+        return layOutGrid(FinitePrimitives(scene), regular);
+    };
+    return chooseGrid(scene, build, regularLayout);
 }
 
 Grid rebuildInstanceLevel(const Scene &scene, Grid previous, const GridOptions &options) {

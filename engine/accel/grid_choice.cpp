@@ -1,6 +1,7 @@
 #include "accel/grid_choice.h"
 
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace prism {
@@ -30,7 +31,31 @@ double walkCost(const WalkCounts &counts, bool adaptive) {
 
 } // namespace
 
-Grid chooseGrid(const Scene &scene, const std::function<Grid(GridOptions::Mode)> &build) {
+Grid chooseGrid(const Scene &scene, const std::function<Grid(GridOptions::Mode)> &build,
+                const std::function<Grid()> &regularLayout) {
+    std::optional<Grid> adaptive;
+    WalkCounts adaptiveCounts;
+    double adaptiveCost = 0.0;
+    auto buildAdaptive = [&] {
+        adaptive = build(GridOptions::Mode::Adaptive);
+        adaptiveCounts = countWalks(scene, *adaptive, kChoiceAspect, kChoiceColumns);
+        adaptiveCost = walkCost(adaptiveCounts, true);
+    };
+    if (scene.finitePrimitiveCount() >= kAdaptiveFirstFrom) {
+        // The regular grid costs at least `bound`. Where even that is not low and the adaptive
+        // grid beats it by the margin, the regular grid's own counts could only widen the gap:
+        // the rules below would choose the adaptive grid too.
+        buildAdaptive();
+        WalkCounts bound = lowerBoundWalks(scene, regularLayout(), kChoiceAspect, kChoiceColumns,
+                                           adaptiveCounts.nearestHits);
+        double boundCost = walkCost(bound, false);
+        if (boundCost >= kConsiderAdaptiveCost && adaptiveCost < kAdaptiveMargin * boundCost) {
+            adaptive->choice = "adaptive: cost " +
+                               describe("adaptive", adaptiveCounts, adaptiveCost) + " against " +
+                               describe("regular", bound, boundCost) + " (not built)";
+            return std::move(*adaptive);
+        }
+    }
     Grid regular = build(GridOptions::Mode::Regular);
     if (scene.finitePrimitiveCount() == 0) {
         regular.choice = "regular (nothing to grid)";
@@ -44,14 +69,13 @@ Grid chooseGrid(const Scene &scene, const std::function<Grid(GridOptions::Mode)>
         regular.choice = "regular: cost " + regularText + " is low";
         return regular;
     }
-    Grid adaptive = build(GridOptions::Mode::Adaptive);
-    WalkCounts adaptiveCounts = countWalks(scene, adaptive, kChoiceAspect, kChoiceColumns);
-    double adaptiveCost = walkCost(adaptiveCounts, true);
+    if (!adaptive)
+        buildAdaptive();
     std::string both =
         describe("adaptive", adaptiveCounts, adaptiveCost) + " against " + regularText;
     if (adaptiveCost < kAdaptiveMargin * regularCost) {
-        adaptive.choice = "adaptive: cost " + both;
-        return adaptive;
+        adaptive->choice = "adaptive: cost " + both;
+        return std::move(*adaptive);
     }
     regular.choice = "regular: cost " + both;
     return regular;

@@ -111,12 +111,43 @@ WalkCounts countWalks(const Scene &scene, const Camera &camera, const Grid &grid
                          return nearest > tExit; // on until the nearest hit is in a cell reached
                      });
             ++counts.rays;
+            counts.nearestHits.push_back(nearest);
             counts.stopped = double(tally.tests) > stopAbove;
         }
     // Per ray of the whole lattice: where counting stopped, the rays not walked count zero.
     double rays = double(width) * double(height);
     counts.cellsPerRay = double(tally.cells) / rays;
     counts.testsPerRay = double(tally.tests) / rays;
+    return counts;
+}
+
+WalkCounts lowerBoundWalks(const Scene &scene, const Grid &layout, double aspect, int columns,
+                           const std::vector<double> &nearestHits) {
+    int width = columns, height = std::max(1, int(double(columns) / aspect + 0.5));
+    if (nearestHits.size() != size_t(width) * size_t(height))
+        throw Error("lowerBoundWalks: " + std::to_string(nearestHits.size()) + " hits for " +
+                    std::to_string(width * height) + " rays");
+    CameraFrame frame = makeCameraFrame(scene.camera, width, height);
+    WalkCounts counts;
+    uint64_t cells = 0, hits = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            Ray ray = cameraRay(frame, glm::dvec2(x + 0.5, y + 0.5));
+            double nearest = nearestHits[size_t(y) * size_t(width) + size_t(x)];
+            uint64_t crossed = 0;
+            walkGrid(layout, ray.origin, ray.dir, std::numeric_limits<double>::infinity(),
+                     [&](uint32_t, double, double tExit) {
+                         ++crossed;
+                         return tExit < nearest;
+                     });
+            cells += crossed > 0 ? crossed - 1 : 0;
+            hits += nearest < std::numeric_limits<double>::infinity() ? 1 : 0;
+            ++counts.rays;
+        }
+    double rays = double(width) * double(height);
+    counts.cellsPerRay = double(cells) / rays;
+    counts.testsPerRay = double(hits) / rays;
+    counts.stopped = true;
     return counts;
 }
 

@@ -53,6 +53,49 @@ TEST(WalkCounts, StoppingEarlyGivesLowerBounds) {
     EXPECT_LE(stopped.cellsPerRay, full.cellsPerRay);
 }
 
+// A regular grid priced without its cells: each ray crosses at least the cells up to its
+// nearest hit (found through another grid) and tests at least what it hits.
+TEST(WalkCounts, LowerBoundsPriceAGridNotBuilt) {
+    for (const Scene &scene : {clusterSeenFromClose(), evenSpheres()}) {
+        WalkCounts adaptive =
+            countWalks(scene, buildGrid(scene, parseGridOption("adaptive")), 4.0 / 3.0, 24);
+        ASSERT_EQ(adaptive.nearestHits.size(), 24u * 18u);
+        Grid regular = buildGrid(scene, parseGridOption("regular"));
+        WalkCounts exact = countWalks(scene, regular, 4.0 / 3.0, 24);
+        EXPECT_EQ(exact.nearestHits, adaptive.nearestHits) << "the same hits through any grid";
+        Grid layout = regular;
+        layout.cellStart.clear();
+        layout.cellPrimitives.clear();
+        WalkCounts bound = lowerBoundWalks(scene, layout, 4.0 / 3.0, 24, adaptive.nearestHits);
+        EXPECT_TRUE(bound.stopped);
+        EXPECT_LE(bound.cellsPerRay, exact.cellsPerRay);
+        EXPECT_GT(bound.cellsPerRay, 0.5 * exact.cellsPerRay) << "and not far below";
+        EXPECT_LE(bound.testsPerRay, exact.testsPerRay);
+        EXPECT_GT(bound.testsPerRay, 0.0);
+    }
+}
+
+// From kAdaptiveFirstFrom primitives the adaptive grid comes first, and where the regular
+// grid's lower bounds settle the choice, the regular grid is not built: the same choice.
+TEST(GridChoice, ABigClusterIsChosenAdaptiveWithoutTheRegularGrid) {
+    Scene scene = test::clusterInARoom(52, int(kAdaptiveFirstFrom), 0);
+    scene.camera.eye = {0.0f, 0.5f, -4.0f};
+    scene.camera.look = {0.0f, 0.0f, 0.0f};
+    Grid g = buildGrid(scene);
+    EXPECT_TRUE(g.adaptive()) << g.choice;
+    EXPECT_EQ(g.choice.rfind("adaptive", 0), 0u) << g.choice;
+    EXPECT_NE(g.choice.find("(not built)"), std::string::npos) << g.choice;
+    Grid adaptive = buildGrid(scene, parseGridOption("adaptive"));
+    EXPECT_EQ(g.entries, adaptive.entries);
+    EXPECT_EQ(g.cellPrimitives, adaptive.cellPrimitives);
+    // The regular grid's own counts: above its bounds, and the choice would be the same.
+    Grid regular = buildGrid(scene, parseGridOption("regular"));
+    WalkCounts counts = countWalks(scene, regular, 4.0 / 3.0, 48, 200.0);
+    WalkCounts mine = countWalks(scene, adaptive, 4.0 / 3.0, 48);
+    EXPECT_LT(mine.testsPerRay + 3.0 * mine.cellsPerRay,
+              kAdaptiveMargin * (counts.testsPerRay + counts.cellsPerRay));
+}
+
 TEST(GridChoice, EvenScenesKeepTheRegularGrid) {
     Scene scene = evenSpheres();
     Grid g = buildGrid(scene);
