@@ -25,7 +25,8 @@ struct CellRange {
 // Part p of a lattice lists refs[start[p] .. start[p + 1]).
 struct PartLists {
     std::vector<uint32_t> start, refs;
-    size_t fullest = 0; // the longest list
+    size_t fullest = 0;           // the longest list
+    std::vector<uint32_t> cursor; // the sort's, kept with its capacity for the next sort
 
     std::span<const uint32_t> list(size_t part) const {
         return {refs.data() + start[part], start[part + 1] - start[part]};
@@ -33,9 +34,11 @@ struct PartLists {
     bool empty(size_t part) const { return start[part + 1] == start[part]; }
 };
 
-// refs[i] goes to every part of `parts` in rangeOf(i) (a CellRange).
+// refs[i] goes to every part of `parts` in rangeOf(i) (a CellRange), into `lists`, whose
+// vectors keep their capacity (a build sorts at every split; reused lists allocate no more).
 template <typename RangeOf>
-PartLists sortIntoParts(const Lattice &parts, std::span<const uint32_t> refs, RangeOf rangeOf) {
+void sortIntoParts(const Lattice &parts, std::span<const uint32_t> refs, RangeOf rangeOf,
+                   PartLists &lists) {
     auto forEachPart = [&](auto visit) {
         for (size_t i = 0; i < refs.size(); ++i) {
             const CellRange r = rangeOf(i);
@@ -45,7 +48,7 @@ PartLists sortIntoParts(const Lattice &parts, std::span<const uint32_t> refs, Ra
                         visit(i, parts.local({x, y, z}));
         }
     };
-    PartLists lists;
+    lists.fullest = 0;
     lists.start.assign(size_t(parts.count()) + 1, 0u);
     forEachPart([&](size_t, uint32_t part) { ++lists.start[part + 1]; });
     for (size_t part = 0; part < parts.count(); ++part) {
@@ -53,8 +56,14 @@ PartLists sortIntoParts(const Lattice &parts, std::span<const uint32_t> refs, Ra
         lists.start[part + 1] += lists.start[part];
     }
     lists.refs.resize(lists.start.back());
-    std::vector<uint32_t> cursor(lists.start.begin(), lists.start.end() - 1);
-    forEachPart([&](size_t i, uint32_t part) { lists.refs[cursor[part]++] = refs[i]; });
+    lists.cursor.assign(lists.start.begin(), lists.start.end() - 1);
+    forEachPart([&](size_t i, uint32_t part) { lists.refs[lists.cursor[part]++] = refs[i]; });
+}
+
+template <typename RangeOf>
+PartLists sortIntoParts(const Lattice &parts, std::span<const uint32_t> refs, RangeOf rangeOf) {
+    PartLists lists;
+    sortIntoParts(parts, refs, rangeOf, lists);
     return lists;
 }
 
