@@ -14,6 +14,25 @@
 namespace prism {
 namespace {
 
+// The lattice of camera rays: the pixel centres of a `columns` wide image of the given aspect
+// (width / height), numbered row by row. countWalks and lowerBoundWalks walk the same rays in
+// the same order, so that one's nearest hits are the other's.
+class RayLattice {
+public:
+    RayLattice(const Camera &camera, double aspect, int columns)
+        : width_(columns), height_(std::max(1, int(double(columns) / aspect + 0.5))),
+          frame_(makeCameraFrame(camera, width_, height_)) {}
+    size_t count() const { return size_t(width_) * size_t(height_); }
+    Ray ray(size_t i) const {
+        return cameraRay(
+            frame_, glm::dvec2(double(i % size_t(width_)) + 0.5, double(i / size_t(width_)) + 0.5));
+    }
+
+private:
+    int width_, height_;
+    CameraFrame frame_;
+};
+
 // What counting found so far.
 struct Tally {
     uint64_t cells = 0;
@@ -86,36 +105,32 @@ WalkCounts countWalks(const Scene &scene, const Grid &grid, double aspect, int c
 WalkCounts countWalks(const Scene &scene, const Camera &camera, const Grid &grid, double aspect,
                       int columns, double stopAboveTestsPerRay) {
     PrimitiveIds ids(scene);
-    // A frame of the lattice's own size: its pixel centres are the rays.
-    int width = columns, height = std::max(1, int(double(columns) / aspect + 0.5));
-    CameraFrame frame = makeCameraFrame(camera, width, height);
+    RayLattice lattice(camera, aspect, columns);
     WalkCounts counts;
     Tally tally;
-    double stopAbove = stopAboveTestsPerRay * double(width) * double(height);
-    for (int y = 0; y < height && !counts.stopped; ++y)
-        for (int x = 0; x < width && !counts.stopped; ++x) {
-            Ray ray = cameraRay(frame, glm::dvec2(x + 0.5, y + 0.5));
-            reference::WatertightRay wray = reference::makeWatertightRay(ray.dir);
-            double nearest = std::numeric_limits<double>::infinity();
-            walkGrid(grid, ray.origin, ray.dir, nearest,
-                     [&](uint32_t cell, double tEnter, double tExit) {
-                         ++tally.cells;
-                         for (uint32_t k = grid.cellStart[cell]; k < grid.cellStart[cell + 1];
-                              ++k) {
-                             ++tally.tests;
-                             double t;
-                             if (intersectId(scene, grid, ids, grid.cellPrimitives[k], ray, wray,
-                                             tEnter, tExit, nearest, t, tally))
-                                 nearest = t;
-                         }
-                         return nearest > tExit; // on until the nearest hit is in a cell reached
-                     });
-            ++counts.rays;
-            counts.nearestHits.push_back(nearest);
-            counts.stopped = double(tally.tests) > stopAbove;
-        }
+    double rays = double(lattice.count());
+    double stopAbove = stopAboveTestsPerRay * rays;
+    for (size_t i = 0; i < lattice.count() && !counts.stopped; ++i) {
+        Ray ray = lattice.ray(i);
+        reference::WatertightRay wray = reference::makeWatertightRay(ray.dir);
+        double nearest = std::numeric_limits<double>::infinity();
+        walkGrid(grid, ray.origin, ray.dir, nearest,
+                 [&](uint32_t cell, double tEnter, double tExit) {
+                     ++tally.cells;
+                     for (uint32_t k = grid.cellStart[cell]; k < grid.cellStart[cell + 1]; ++k) {
+                         ++tally.tests;
+                         double t;
+                         if (intersectId(scene, grid, ids, grid.cellPrimitives[k], ray, wray,
+                                         tEnter, tExit, nearest, t, tally))
+                             nearest = t;
+                     }
+                     return nearest > tExit; // on until the nearest hit is in a cell reached
+                 });
+        ++counts.rays;
+        counts.nearestHits.push_back(nearest);
+        counts.stopped = double(tally.tests) > stopAbove;
+    }
     // Per ray of the whole lattice: where counting stopped, the rays not walked count zero.
-    double rays = double(width) * double(height);
     counts.cellsPerRay = double(tally.cells) / rays;
     counts.testsPerRay = double(tally.tests) / rays;
     return counts;
@@ -123,28 +138,26 @@ WalkCounts countWalks(const Scene &scene, const Camera &camera, const Grid &grid
 
 WalkCounts lowerBoundWalks(const Scene &scene, const Grid &layout, double aspect, int columns,
                            const std::vector<double> &nearestHits) {
-    int width = columns, height = std::max(1, int(double(columns) / aspect + 0.5));
-    if (nearestHits.size() != size_t(width) * size_t(height))
+    RayLattice lattice(scene.camera, aspect, columns);
+    if (nearestHits.size() != lattice.count())
         throw Error("lowerBoundWalks: " + std::to_string(nearestHits.size()) + " hits for " +
-                    std::to_string(width * height) + " rays");
-    CameraFrame frame = makeCameraFrame(scene.camera, width, height);
+                    std::to_string(lattice.count()) + " rays");
     WalkCounts counts;
     uint64_t cells = 0, hits = 0;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            Ray ray = cameraRay(frame, glm::dvec2(x + 0.5, y + 0.5));
-            double nearest = nearestHits[size_t(y) * size_t(width) + size_t(x)];
-            uint64_t crossed = 0;
-            walkGrid(layout, ray.origin, ray.dir, std::numeric_limits<double>::infinity(),
-                     [&](uint32_t, double, double tExit) {
-                         ++crossed;
-                         return tExit < nearest;
-                     });
-            cells += crossed > 0 ? crossed - 1 : 0;
-            hits += nearest < std::numeric_limits<double>::infinity() ? 1 : 0;
-            ++counts.rays;
-        }
-    double rays = double(width) * double(height);
+    for (size_t i = 0; i < lattice.count(); ++i) {
+        Ray ray = lattice.ray(i);
+        double nearest = nearestHits[i];
+        uint64_t crossed = 0;
+        walkGrid(layout, ray.origin, ray.dir, std::numeric_limits<double>::infinity(),
+                 [&](uint32_t, double, double tExit) {
+                     ++crossed;
+                     return tExit < nearest;
+                 });
+        cells += crossed > 0 ? crossed - 1 : 0;
+        hits += nearest < std::numeric_limits<double>::infinity() ? 1 : 0;
+        ++counts.rays;
+    }
+    double rays = double(lattice.count());
     counts.cellsPerRay = double(cells) / rays;
     counts.testsPerRay = double(hits) / rays;
     counts.stopped = true;

@@ -73,8 +73,7 @@ Surface surfaceAt(const Scene &scene, const Ray &ray, const Hit &hit) {
         break; // nothing was hit: no surface
     case HitKind::Triangle: {
         const Triangle &tri = scene.triangles[hit.index];
-        const TriangleShading none,
-            &shading = tri.shading == kNoShading ? none : scene.triangleShading[tri.shading];
+        const TriangleShading &shading = shadingOf(tri, scene.triangleShading);
         double b1 = hit.b12.x, b2 = hit.b12.y, b0 = 1.0 - b1 - b2;
         glm::dvec3 p0(tri.p[0]), p1(tri.p[1]), p2(tri.p[2]);
         s.position = b0 * p0 + b1 * p1 + b2 * p2;

@@ -196,7 +196,7 @@ gpu::GpuTriangle toGpu(const Triangle &t, std::span<const TriangleShading>) {
 }
 
 gpu::GpuTriangleShading toGpuShading(const Triangle &t, std::span<const TriangleShading> list) {
-    const TriangleShading none, &s = t.shading == kNoShading ? none : list[t.shading];
+    const TriangleShading &s = shadingOf(t, list);
     return {glm::vec4(s.n[0], s.hasNormals ? 1.0f : 0.0f),
             glm::vec4(s.n[1], s.hasUVs ? 1.0f : 0.0f), glm::vec4(s.n[2], 0.0f),
             glm::vec4(s.uv[0], s.uv[1]), glm::vec4(s.uv[2], 0.0f, 0.0f)};

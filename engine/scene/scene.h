@@ -100,11 +100,12 @@ struct Triangle {
 };
 static_assert(sizeof(Triangle) == 80);
 
-// The record `t` points to in `shading` (its owner's list), or null for a flat triangle
-// without texture coordinates.
-inline const TriangleShading *shadingOf(const Triangle &t,
-                                        const std::vector<TriangleShading> &shading) {
-    return t.shading == kNoShading ? nullptr : &shading[t.shading];
+// The record `t` points to in `shading` (its owner's list), or an empty one (no normals, no
+// texture coordinates) for a triangle without.
+inline const TriangleShading &shadingOf(const Triangle &t,
+                                        std::span<const TriangleShading> shading) {
+    static const TriangleShading none;
+    return t.shading == kNoShading ? none : shading[t.shading];
 }
 
 // The record `t` points to in `shading`, made (empty) if it has none yet.
@@ -130,9 +131,8 @@ struct MeshPrototype {
     std::vector<TriangleShading> shading; // the records its triangles point to
 
     // Triangle i's normals and texture coordinates (an empty record where it has none).
-    TriangleShading shadingOf(size_t i) const {
-        const TriangleShading *s = prism::shadingOf(triangles[i], shading);
-        return s ? *s : TriangleShading{};
+    const TriangleShading &shadingOf(size_t i) const {
+        return prism::shadingOf(triangles[i], shading);
     }
 };
 
@@ -221,9 +221,8 @@ struct Scene {
     std::vector<std::string> warnings; // "FILE:LINE: warning: ..." lines, in order
 
     // Triangle i's normals and texture coordinates (an empty record where it has none).
-    TriangleShading shadingOf(size_t i) const {
-        const TriangleShading *s = prism::shadingOf(triangles[i], triangleShading);
-        return s ? *s : TriangleShading{};
+    const TriangleShading &shadingOf(size_t i) const {
+        return prism::shadingOf(triangles[i], triangleShading);
     }
 
     // Primitives that live in the grid (their ids: scene/primitive_ids.h); an instance is one,

@@ -40,10 +40,9 @@ TEST(CameraAnimation, AStillSceneHasOneCameraAtEveryFrame) {
 }
 
 TEST(CameraAnimation, KeysChangeOnlyTheFieldsTheyName) {
-    Scene scene = parseScene(std::string(kCamera) +
-                                 "key 11 eye 10 2 -8\n"
-                                 "# keys may have comments between them\n"
-                                 "key 21 fov 30 look 0 0 0\n",
+    Scene scene = parseScene(std::string(kCamera) + "key 11 eye 10 2 -8\n"
+                                                    "# keys may have comments between them\n"
+                                                    "key 21 fov 30 look 0 0 0\n",
                              kFile);
     ASSERT_EQ(scene.cameraAnimation.keys.size(), 2u);
     const CameraKey &k1 = scene.cameraAnimation.keys[0], &k2 = scene.cameraAnimation.keys[1];
@@ -155,8 +154,7 @@ TEST(CameraAnimation, BadTurntablesAndInterpolationsAreErrorsAtTheirLine) {
 TEST(CameraAnimation, ASplineThatOvershootsIntoNoViewIsAnErrorNamingTheFrameAndKeys) {
     // The look point sweeps through the eye's path: the straight line never meets the eye, but
     // here eye and look meet at frame 6 (both at x = 5).
-    Scene scene = parseScene(
-        "camera eye 0 0 0 look 10 0 0\nkey 11 eye 10 0 0 look 0 0 0\n", kFile);
+    Scene scene = parseScene("camera eye 0 0 0 look 10 0 0\nkey 11 eye 10 0 0 look 0 0 0\n", kFile);
     try {
         cameraAt(scene, 6.0);
         ADD_FAILURE() << "no error";

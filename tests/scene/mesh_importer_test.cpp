@@ -55,7 +55,7 @@ TEST(MeshImporter, VertexNormalsAreTransformedAndNormalised) {
     Scene scene =
         loadScene(dir.write("s.scene", "mesh n.obj scale 5 rotate x 90 translate 9 9 9\n"));
     ASSERT_EQ(scene.triangles.size(), 1u);
-    TriangleShading t = scene.shadingOf(0);
+    const TriangleShading &t = scene.shadingOf(0);
     ASSERT_TRUE(t.hasNormals);
     EXPECT_EQ(t.n[0], glm::vec3(0, -1, 0)); // z -> -y under x 90
     EXPECT_FLOAT_EQ(t.n[2].y, -std::sqrt(0.5f));

@@ -210,7 +210,7 @@ TEST(ObjCache, SceneFromTheCacheHasTheSameTriangles) {
         ASSERT_EQ(s->triangles.size(), parsed.triangles.size());
         for (size_t i = 0; i < parsed.triangles.size(); ++i) {
             const Triangle &a = s->triangles[i], &b = parsed.triangles[i];
-            TriangleShading as = s->shadingOf(i), bs = parsed.shadingOf(i);
+            const TriangleShading &as = s->shadingOf(i), &bs = parsed.shadingOf(i);
             for (int k = 0; k < 3; ++k) {
                 EXPECT_EQ(a.p[k], b.p[k]);
                 EXPECT_EQ(as.n[k], bs.n[k]);

@@ -178,9 +178,9 @@ TEST_F(PlacementAnimation, BadKeysAreErrorsAtTheirLine) {
 
 TEST_F(PlacementAnimation, KeysOfAnEmptyPrototypesPlaceAreReadButMoveNothing) {
     dir_.write("empty.obj", "v 0 0 0\n");
-    Scene scene = loadScene(dir_.write("e.scene", std::string(kHead) +
-                                                      "mesh empty.obj as nothing\n"
-                                                      "place nothing\nkey 5 scale 2\n"));
+    Scene scene =
+        loadScene(dir_.write("e.scene", std::string(kHead) + "mesh empty.obj as nothing\n"
+                                                             "place nothing\nkey 5 scale 2\n"));
     EXPECT_TRUE(scene.instances.empty());
     EXPECT_TRUE(scene.placementTracks.empty());
     EXPECT_FALSE(placementsAnimated(scene));

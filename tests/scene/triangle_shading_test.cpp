@@ -43,11 +43,11 @@ TEST(TriangleShading, AppendedTrianglesPointToTheirOwnRecordsInTheNewList) {
     ASSERT_EQ(toShading.size(), 3u);
     EXPECT_EQ(to[0].shading, 0u); // the list's own triangle is left alone
     EXPECT_EQ(to[1].p[0], glm::dvec3(1, 0, 0));
-    EXPECT_EQ(shadingOf(to[1], toShading)->n[0], glm::vec3(0, 1, 0));
+    EXPECT_EQ(shadingOf(to[1], toShading).n[0], glm::vec3(0, 1, 0));
     EXPECT_EQ(to[2].shading, kNoShading);
-    EXPECT_EQ(shadingOf(to[2], toShading), nullptr);
-    EXPECT_EQ(shadingOf(to[3], toShading)->n[0], glm::vec3(0, 0, 1));
-    EXPECT_EQ(shadingOf(to[0], toShading)->n[0], glm::vec3(1, 0, 0));
+    EXPECT_FALSE(shadingOf(to[2], toShading).hasNormals);
+    EXPECT_EQ(shadingOf(to[3], toShading).n[0], glm::vec3(0, 0, 1));
+    EXPECT_EQ(shadingOf(to[0], toShading).n[0], glm::vec3(1, 0, 0));
 }
 
 // Two meshes with normals in one scene: the second is appended to the first's triangles, and
