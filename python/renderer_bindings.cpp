@@ -139,6 +139,8 @@ public:
                 TracerOptions options;
                 options.maxDepth = depth;
                 options.writeAov = key.aov;
+                const std::optional<SceneExtent> &extent = scene->prepared->extent;
+                options.extent = extent ? &*extent : nullptr;
                 tracer_ =
                     std::make_unique<RayTracer>(*context_, scene->prepared->scene,
                                                 scene->prepared->grid, width, height, options);

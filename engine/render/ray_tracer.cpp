@@ -59,7 +59,8 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
             context, runner_,
             packScene(scene, grid, features_.cellTriangles, features_.cellSpheres), limits_,
             options.stagedUpload ? UploadPath::Staged : UploadPath::InPlaceWhereShared);
-        extent_ = sceneExtent(scene, grid, options.maxStartBoxes);
+        extent_ = options.extent ? *options.extent
+                                 : sceneExtent(scene, grid, options.maxStartBoxes);
     };
     if (scene.finitePrimitiveCount() >= options.compileBesideUploadFrom) {
         compileBeside(writeArrays);
@@ -75,6 +76,7 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
     // A GPU schedules workgroups its own way: there the order of the rows does not matter.
     dispatchShares_ = context.isLavapipe() && options.rowsByThread ? lavapipeDispatchShares() : 0;
     choosePlaneGuards(scene);
+    options_.extent = nullptr; // the caller's, for this constructor only: setScene finds its own
 }
 
 // A big scene's tracer pipeline compiles on one core while the scene's arrays are written and its

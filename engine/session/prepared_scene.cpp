@@ -16,6 +16,10 @@ PreparedScene prepareScene(Scene scene, const GridOptions &options, const DiskCa
     Timer build;
     prepared.grid = buildGridCached(prepared.scene, options, GridCachePolicy{cache},
                                     &prepared.gridCache);
+    // Part of the build phase: what the grid's arrays come to on the image, found where
+    // every core is free (the tracer's own set-up runs beside its compile on one).
+    prepared.extent = sceneExtentCached(prepared.scene, prepared.grid, kMaxStartBoxes, cache,
+                                        prepared.gridCache.key, &prepared.extentCache);
     prepared.buildMs = build.elapsedMs();
     prepared.gridOptions = options;
     return prepared;
@@ -34,6 +38,7 @@ bool moveToFrame(PreparedScene &prepared, double frame, double *rebuildMs) {
     prepared.scene.instances = std::move(instances);
     prepared.grid =
         rebuildInstanceLevel(prepared.scene, std::move(prepared.grid), prepared.gridOptions);
+    prepared.extent.reset();
     if (rebuildMs)
         *rebuildMs = build.elapsedMs();
     return true;

@@ -1,11 +1,15 @@
 #pragma once
 // A scene made ready to be rendered many times, as every front end does it (prism-render, its
 // frame ranges and farm tasks, the Python module): centred on its frame-1 camera
-// (scene/scene_origin.h) and its grid built, or read from the grid cache (accel/grid_cache.h).
+// (scene/scene_origin.h), its grid built, or read from the grid cache (accel/grid_cache.h),
+// and its extent found, or read from the cache beside the grid (render/extent_cache.h).
 // Cameras given later (an animation's frames, a camera set from Python) are moved into the same
 // coordinates with toSceneCoordinates.
+#include <optional>
+
 #include "accel/grid.h"
 #include "accel/grid_cache.h"
+#include "render/extent_cache.h"
 #include "scene/placement_animation.h"
 #include "scene/scene.h"
 
@@ -19,6 +23,11 @@ struct PreparedScene {
     GridCacheOutcome gridCache;
     double buildMs = 0.0; // the grid's build or cache read
     GridOptions gridOptions; // what the grid was built with
+    // sceneExtent(scene, grid) with the tracer's default start-box cap, for the tracer
+    // (TracerOptions::extent); none once moveToFrame has moved an instance (the tracer's
+    // setScene finds its own).
+    std::optional<SceneExtent> extent;
+    ExtentCacheOutcome extentCache;
     // The frame Scene::instances and the grid hold: 1 until moveToFrame moves keyed instances.
     double frame = 1.0;
 };
@@ -27,7 +36,7 @@ struct PreparedScene {
 PreparedScene prepareScene(Scene scene, const GridOptions &options, const DiskCache *cache);
 
 // Moves the keyed instances (scene/placement_animation.h) to `frame` and builds the grid's level
-// they are in again, the prototypes' mesh grids kept (Grid::meshGrids). Returns whether any
+// they are in again, the prototypes' mesh grids kept (Grid::meshGrids); the extent is dropped. Returns whether any
 // instance moved, and so whether a tracer of the scene needs the new arrays
 // (RayTracer::setScene); a scene without keyed placements, or a frame where none has moved
 // (held before the first key and after the last), costs nothing. `rebuildMs`, where given,

@@ -48,7 +48,10 @@ nlohmann::json sceneStats(const PreparedScene &prepared) {
              {{"state", cache.state},
               {"key_ms", cache.keyMs},
               {"read_ms", cache.readMs},
-              {"store_ms", cache.storeMs}}}};
+              {"store_ms", cache.storeMs}}},
+            // The tiles' extent, found as part of the build (PreparedScene::extent).
+            {"extent_cache",
+             {{"state", prepared.extentCache.state}, {"ms", prepared.extentCache.ms}}}};
 }
 
 nlohmann::json objCacheStats(const ObjCacheUse &use) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "accel/bounds.h"
 #include "accel/grid.h"
 #include "reference/reference_renderer.h"
 #include "render/ray_tracer.h"
@@ -11,6 +12,16 @@
 #include "scene/scene_origin.h"
 
 namespace prism::test {
+
+// The same boxes in the same order, bit for bit (extents, render/traced_tiles.h).
+inline bool sameBoxes(const std::vector<Aabb> &a, const std::vector<Aabb> &b) {
+    if (a.size() != b.size())
+        return false;
+    for (size_t i = 0; i < a.size(); ++i)
+        if (a[i].min != b[i].min || a[i].max != b[i].max)
+            return false;
+    return true;
+}
 
 struct GpuRender {
     TracedImage image;

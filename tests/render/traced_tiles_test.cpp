@@ -322,14 +322,6 @@ TEST(TracedTiles, TheExtentsBlocksAreTheSameAtEveryThreadCount) {
                     0);
     }
     Grid grid = buildGrid(scene);
-    auto same = [](const std::vector<Aabb> &a, const std::vector<Aabb> &b) {
-        if (a.size() != b.size())
-            return false;
-        for (size_t i = 0; i < a.size(); ++i)
-            if (a[i].min != b[i].min || a[i].max != b[i].max)
-                return false;
-        return true;
-    };
     SceneExtent one;
     {
         ParallelThreads limit(1);
@@ -339,8 +331,8 @@ TEST(TracedTiles, TheExtentsBlocksAreTheSameAtEveryThreadCount) {
     for (unsigned threads : {2u, 3u}) {
         ParallelThreads limit(threads);
         SceneExtent again = sceneExtent(scene, grid);
-        EXPECT_TRUE(same(again.boxes, one.boxes)) << threads << " threads";
-        EXPECT_TRUE(same(again.startBoxes, one.startBoxes)) << threads << " threads";
+        EXPECT_TRUE(sameBoxes(again.boxes, one.boxes)) << threads << " threads";
+        EXPECT_TRUE(sameBoxes(again.startBoxes, one.startBoxes)) << threads << " threads";
     }
 }
 
@@ -822,6 +814,33 @@ TEST_F(TracedTilesRender, ChangeNoPixel) {
     EXPECT_LT(
         tracedShare(tilesThatMayHit(frameFor(centred.camera, 70, 50), sceneExtent(centred, grid))),
         0.9);
+}
+
+// A tracer given the scene's extent (TracerOptions::extent, as prepareScene finds it or reads it
+// from the cache) traces by that extent: the one sceneExtent finds gives the same frame as none
+// given, and an extent with nothing in it leaves every tile to the background, so the given one
+// is the one used.
+TEST_F(TracedTilesRender, AGivenExtentIsTheOneTracedBy) {
+    Scene scene = stabilityScene();
+    scene.planes.clear(); // the floor's tiles would be traced by any extent with its plane
+    centerOnCamera(scene);
+    Grid grid = buildGrid(scene);
+    SceneExtent found = sceneExtent(scene, grid);
+    SceneExtent nothing;
+    auto render = [&](const SceneExtent *extent) {
+        TracerOptions options;
+        options.extent = extent;
+        RayTracer tracer(context(), scene, grid, 70, 50, options);
+        GpuRender out;
+        out.frame = tracer.renderFrame(scene.camera, 1);
+        out.image = tracer.readback(1);
+        return out;
+    };
+    GpuRender own = render(nullptr), given = render(&found), empty = render(&nothing);
+    expectSameFrame(given, own);
+    EXPECT_NE(empty.image.rgba, own.image.rgba);
+    EXPECT_EQ(empty.frame.rays.shadow, 0u) << "no tile traced the geometry";
+    EXPECT_GT(own.frame.rays.shadow, 0u);
 }
 
 // The eye inside a large sphere (its blocks there left out of the extent: rays reach them only

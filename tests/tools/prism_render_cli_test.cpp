@@ -107,9 +107,9 @@ TEST_F(PrismRenderCli, BadOptionsFailClearly) {
 }
 
 // The grid cache (accel/grid_cache.h): the first render builds and stores the grid, the second
-// reads it back (and the pipeline cache with it, vk/pipeline_cache.h), and both images equal a
-// render without the cache, pixel for pixel (the AOVs too: the grid decides which triangle each ray
-// hits).
+// reads it back (and its extent and the pipeline cache with it, vk/pipeline_cache.h), and both
+// images equal a render without the cache, pixel for pixel (the AOVs too: the grid decides which
+// triangle each ray hits).
 TEST_F(PrismRenderCli, GridFromTheCacheRendersTheSameImage) {
     fs::path cache = dir() / "cache";
     std::string base = std::string(PRISM_SCENES_DIR) + "/bunny.scene --size 48x36 --depth 2 " +
@@ -123,6 +123,8 @@ TEST_F(PrismRenderCli, GridFromTheCacheRendersTheSameImage) {
         ASSERT_EQ(r.exitCode, 0) << r.out;
         nlohmann::json stats = nlohmann::json::parse(r.stdoutOnly);
         EXPECT_EQ(stats["grid_cache"]["state"].get<std::string>(), state);
+        // The tiles' extent is kept beside the grid (render/extent_cache.h).
+        EXPECT_EQ(stats["extent_cache"]["state"].get<std::string>(), state);
         // The device's pipeline cache goes the same way: stored by the first run, given to the
         // driver by the second (lavapipe's is a header alone, but a header is bytes).
         uint64_t loaded = stats["pipeline_cache"]["loaded_bytes"].get<uint64_t>();
@@ -141,16 +143,18 @@ TEST_F(PrismRenderCli, GridFromTheCacheRendersTheSameImage) {
     ASSERT_FALSE(images[0].pixels.empty());
     EXPECT_EQ(images[1].pixels, images[0].pixels) << "from the cache";
     EXPECT_EQ(images[2].pixels, images[0].pixels) << "without the cache";
-    // The grid's entry, the device's pipelines and the tracer's folded modules: nothing else.
+    // The grid's and its extent's entries, the device's pipelines and the tracer's folded
+    // modules: nothing else.
     std::map<std::string, size_t> kinds;
     for (const auto &e : fs::directory_iterator(cache)) {
         std::string name = e.path().filename().string();
         ++kinds[name.substr(0, name.find('-'))];
     }
     EXPECT_EQ(kinds["grid"], 1u);
+    EXPECT_EQ(kinds["extent"], 1u);
     EXPECT_EQ(kinds["pipelines"], 1u);
     EXPECT_GE(kinds["spirv"], 1u);
-    EXPECT_EQ(kinds.size(), 3u);
+    EXPECT_EQ(kinds.size(), 4u);
     CliResult both =
         run(base + (dir() / "x.exr").string() + " --no-cache --cache " + cache.string());
     EXPECT_NE(both.exitCode, 0);

@@ -70,13 +70,15 @@ vk::Context &ContextInBackground::get(double &waitedMs, double &madeMs) {
 }
 
 VulkanFrameSource::VulkanFrameSource(const RenderOptions &o, const Scene &scene, const Grid &grid,
-                                     ContextInBackground &background, const Camera &firstCamera)
+                                     const SceneExtent *extent, ContextInBackground &background,
+                                     const Camera &firstCamera)
     : o_(o) {
     context_ = &background.get(phases_.contextMs, phases_.contextMadeMs);
     TracerOptions tracerOptions;
     tracerOptions.maxDepth = o.maxDepth;
     tracerOptions.writeAov = o.aovDepth || o.aovNormal;
     tracerOptions.region = o.region;
+    tracerOptions.extent = extent;
     Timer phase;
     tracer_ = std::make_unique<RayTracer>(*context_, scene, grid, o.width, o.height, tracerOptions);
     tracer_->setSeed(o.seed);

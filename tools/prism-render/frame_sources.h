@@ -76,8 +76,10 @@ public:
 class VulkanFrameSource : public FrameSource {
 public:
     // Waits for the context, uploads the scene and compiles the tracer on `firstCamera`'s view.
+    // `extent`: the scene's extent found already (PreparedScene::extent), or null.
     VulkanFrameSource(const RenderOptions &o, const Scene &scene, const Grid &grid,
-                      ContextInBackground &background, const Camera &firstCamera);
+                      const SceneExtent *extent, ContextInBackground &background,
+                      const Camera &firstCamera);
     FrameOutcome render(const Camera &camera, const std::string &label, const std::string &after,
                         ProgressLine &progress) override;
     std::string device() const override { return context_->deviceName(); }

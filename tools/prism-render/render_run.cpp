@@ -158,7 +158,9 @@ void runRender(const RenderOptions &o) {
     if (o.backend == Backend::Cpu) {
         source = std::make_unique<CpuFrameSource>(o, scene);
     } else {
-        auto made = std::make_unique<VulkanFrameSource>(o, scene, grid, *context, cameras.front());
+        auto made = std::make_unique<VulkanFrameSource>(
+            o, scene, grid, prepared.extent ? &*prepared.extent : nullptr, *context,
+            cameras.front());
         vulkan = made.get();
         source = std::move(made);
     }
