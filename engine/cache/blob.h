@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -65,6 +66,22 @@ public:
         if (count > 0) // an empty vector's data() may be null, which memcpy must not be given
             std::memcpy(v.data(), from, size_t(count) * sizeof(T));
         return v;
+    }
+    // An array where its bytes lie, not copied, where they lie aligned for T (an entry's
+    // mapped bytes start on a page and its arrays of 4-byte elements keep 4-byte alignment);
+    // else copied into `copy`. The span lives as long as the bytes read from (or `copy`).
+    template <typename T> std::span<const T> view(std::vector<T> &copy) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        uint64_t count = value<uint64_t>();
+        if (count > rest_.size() / sizeof(T))
+            throw BlobFormatError("an array runs past the end of the entry");
+        const char *from = take(size_t(count) * sizeof(T));
+        if (reinterpret_cast<uintptr_t>(from) % alignof(T) == 0)
+            return {reinterpret_cast<const T *>(from), size_t(count)};
+        copy.resize(size_t(count));
+        if (count > 0)
+            std::memcpy(copy.data(), from, size_t(count) * sizeof(T));
+        return copy;
     }
     std::string text() {
         uint64_t size = value<uint64_t>();

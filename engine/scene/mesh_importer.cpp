@@ -21,7 +21,7 @@ bool isReadableFile(const std::filesystem::path &path) {
 }
 
 // Placed vertex positions; a vertex pushed out of float range is an error of the mesh line.
-std::vector<glm::dvec3> placePositions(const ObjModel &model, const AffineMap &map) {
+std::vector<glm::dvec3> placePositions(const ObjModelView &model, const AffineMap &map) {
     std::vector<glm::dvec3> placed;
     reserveInHugePages(placed, model.positions.size());
     placed.resize(model.positions.size());
@@ -36,7 +36,7 @@ std::vector<glm::dvec3> placePositions(const ObjModel &model, const AffineMap &m
 }
 
 // Placed unit normals; a zero normal stays zero and disables vertex normals where it is used.
-std::vector<glm::vec3> placeNormals(const ObjModel &model, const AffineMap &map) {
+std::vector<glm::vec3> placeNormals(const ObjModelView &model, const AffineMap &map) {
     std::vector<glm::vec3> placed(model.normals.size());
     for (size_t i = 0; i < placed.size(); ++i) {
         glm::dvec3 n = map.normal(model.normals[i]);
@@ -48,7 +48,7 @@ std::vector<glm::vec3> placeNormals(const ObjModel &model, const AffineMap &map)
 
 // One id per distinct vertex position, so that a file which repeats a vertex for each face
 // (common after STL or per-face exports) still smooths across its faces.
-std::vector<uint32_t> weldedVertices(const ObjModel &model) {
+std::vector<uint32_t> weldedVertices(const ObjModelView &model) {
     std::map<std::array<float, 3>, uint32_t> ids;
     std::vector<uint32_t> welded(model.positions.size());
     for (size_t i = 0; i < welded.size(); ++i) {
@@ -65,7 +65,7 @@ bool hasZeroArea(const glm::dvec3 &p0, const glm::dvec3 &p1, const glm::dvec3 &p
     return glm::cross(p1 - p0, p2 - p0) == glm::dvec3(0.0);
 }
 
-MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &request,
+MeshImportResult MeshImporter::import(const ObjModelView &model, const MeshRequest &request,
                                       Scene &scene, TextureCache &textures,
                                       const TriangleSink &sink) {
     std::vector<uint32_t> slotMaterial;
@@ -158,7 +158,7 @@ MeshImportResult MeshImporter::import(const ObjModel &model, const MeshRequest &
     return result;
 }
 
-std::vector<uint32_t> MeshImporter::slotMaterials(const ObjModel &model, const MeshRequest &request,
+std::vector<uint32_t> MeshImporter::slotMaterials(const ObjModelView &model, const MeshRequest &request,
                                                   Scene &scene, TextureCache &textures) {
     std::vector<const LoadedLibrary *> libraries = loadLibraries(model, request, scene);
     std::vector<bool> used(model.useMtl.size(), false);
@@ -192,7 +192,7 @@ std::vector<uint32_t> MeshImporter::slotMaterials(const ObjModel &model, const M
 }
 
 std::vector<const MeshImporter::LoadedLibrary *>
-MeshImporter::loadLibraries(const ObjModel &model, const MeshRequest &request, Scene &scene) {
+MeshImporter::loadLibraries(const ObjModelView &model, const MeshRequest &request, Scene &scene) {
     std::filesystem::path objDir = request.objPath.parent_path();
     std::string objDisplay = displayPath(request.objPath);
     std::vector<const LoadedLibrary *> libraries;

@@ -47,7 +47,7 @@ public:
     // to `sink.shading`), and the MTL materials and textures
     // they use to `scene`; MTL problems become warnings. Throws LineError if the transform
     // makes a vertex non-finite, or the scene would hold more than sink.maxTriangles triangles.
-    MeshImportResult import(const ObjModel &model, const MeshRequest &request, Scene &scene,
+    MeshImportResult import(const ObjModelView &model, const MeshRequest &request, Scene &scene,
                             TextureCache &textures, const TriangleSink &sink);
 
 private:
@@ -58,11 +58,11 @@ private:
         MtlLibrary library;
     };
 
-    std::vector<const LoadedLibrary *> loadLibraries(const ObjModel &model,
+    std::vector<const LoadedLibrary *> loadLibraries(const ObjModelView &model,
                                                      const MeshRequest &request, Scene &scene);
     const LoadedLibrary *loadLibrary(const std::filesystem::path &path, int objLine,
                                      const std::string &objDisplay, Scene &scene);
-    std::vector<uint32_t> slotMaterials(const ObjModel &model, const MeshRequest &request,
+    std::vector<uint32_t> slotMaterials(const ObjModelView &model, const MeshRequest &request,
                                         Scene &scene, TextureCache &textures);
     uint32_t sceneMaterial(const LoadedLibrary &library, const MtlMaterial &mtl,
                            const MeshRequest &request, Scene &scene, TextureCache &textures);

@@ -44,7 +44,7 @@ bool inRange(int32_t index, size_t count) {
 
 // The importer indexes the arrays with what the model says, unchecked: an entry that passed the
 // checksum but holds an index past its array (a writer's bug) must not get there.
-void checkIndices(const ObjModel &m) {
+void checkIndices(const ObjModelView &m) {
     for (const ObjCorner &c : m.corners) {
         if (!inRange(c.position, m.positions.size()) ||
             (c.uv != kObjNoIndex && !inRange(c.uv, m.uvs.size())) ||
@@ -99,39 +99,53 @@ std::string packObjModel(const ObjModel &model) {
     return out.take();
 }
 
-ObjModel unpackObjModel(std::string_view bytes) {
+ObjModelView viewObjModel(std::string_view bytes, ObjModel &rest) {
     BlobReader in(bytes);
-    ObjModel model;
-    model.positions = in.values<glm::vec3>();
-    model.uvs = in.values<glm::vec2>();
-    model.normals = in.values<glm::vec3>();
-    model.corners = in.values<ObjCorner>();
-    model.faces = in.values<ObjFace>();
-    model.useMtl = unpackNamed<ObjUseMtl>(in);
-    model.mtlLibs = unpackNamed<ObjMtlLib>(in);
+    ObjModelView view;
+    view.positions = in.view(rest.positions);
+    view.uvs = in.view(rest.uvs);
+    view.normals = in.view(rest.normals);
+    view.corners = in.view(rest.corners);
+    view.faces = in.view(rest.faces);
+    rest.useMtl = unpackNamed<ObjUseMtl>(in);
+    rest.mtlLibs = unpackNamed<ObjMtlLib>(in);
     uint64_t warnings = in.value<uint64_t>();
     for (uint64_t i = 0; i < warnings; ++i)
-        model.warnings.push_back(in.text());
+        rest.warnings.push_back(in.text());
     if (!in.atEnd())
         throw BlobFormatError("bytes left over after the model");
-    checkIndices(model);
-    return model;
+    view.useMtl = rest.useMtl;
+    view.mtlLibs = rest.mtlLibs;
+    view.warnings = rest.warnings;
+    checkIndices(view);
+    return view;
 }
 
-ObjModel loadObjFile(const std::filesystem::path &path, const std::string &fileName,
-                     ObjCacheUse *use) {
+ObjModel unpackObjModel(std::string_view bytes) {
+    ObjModel rest;
+    return copyModel(viewObjModel(bytes, rest));
+}
+
+LoadedObjModel::LoadedObjModel(ObjModel parsed) : owned_(std::move(parsed)), view_(owned_.view()) {}
+
+LoadedObjModel::LoadedObjModel(CacheEntry entry) : entry_(std::move(entry)) {
+    view_ = viewObjModel(entry_->payload, owned_);
+}
+
+LoadedObjModel loadObjFile(const std::filesystem::path &path, const std::string &fileName,
+                           ObjCacheUse *use) {
     // Mapped, not copied: the page cache's pages cost no fresh memory (core/mapped_file.h).
     MappedFile file(path, "OBJ file");
     std::string_view bytes = file.bytes();
     if (!use || !use->cache || bytes.size() < use->minBytes)
-        return parseObj(bytes, fileName);
+        return LoadedObjModel(parseObj(bytes, fileName));
     Timer timer;
     std::string key = objCacheKey(bytes, fileName);
     use->keyMs += timer.elapsedMs();
     timer.reset();
     if (std::optional<CacheEntry> entry = use->cache->load("obj", key, kObjCacheFormat)) {
         try {
-            ObjModel model = unpackObjModel(entry->payload);
+            LoadedObjModel model(std::move(*entry));
             use->readMs += timer.elapsedMs();
             ++use->hits;
             return model;
@@ -139,7 +153,7 @@ ObjModel loadObjFile(const std::filesystem::path &path, const std::string &fileN
             use->cache->discard("obj", key, "parsed from '" + fileName + "': " + e.what());
         }
     }
-    return parseAndStore(bytes, fileName, key, *use);
+    return LoadedObjModel(parseAndStore(bytes, fileName, key, *use));
 }
 
 } // namespace prism

@@ -10,14 +10,14 @@
 // index past its array) is removed with one warning line and the file parsed anew.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
+#include "cache/disk_cache.h"
 #include "scene/obj_loader.h"
 
 namespace prism {
-
-class DiskCache;
 
 constexpr uint32_t kObjCacheFormat = 1;
 
@@ -37,12 +37,32 @@ struct ObjCacheUse {
 
 std::string objCacheKey(std::string_view fileBytes, const std::string &fileName);
 std::string packObjModel(const ObjModel &model);
-ObjModel unpackObjModel(std::string_view bytes); // throws BlobFormatError on a damaged entry
+// The model packed in `bytes`, its arrays viewed in `bytes` where they lie aligned (else
+// copied into `rest`), its usemtl and mtllib lines and warnings always in `rest`: the view
+// lives as long as both. Throws BlobFormatError on a damaged entry.
+ObjModelView viewObjModel(std::string_view bytes, ObjModel &rest);
+ObjModel unpackObjModel(std::string_view bytes); // viewObjModel, copied
+
+// A model as loadObjFile gives it: parsed (its own arrays), or read back from the cache, its
+// arrays viewed in the entry's mapped bytes: the page cache's own pages, where a copy made
+// 60 MB of fresh memory for a 1M-triangle mesh (core/mapped_file.h). Movable: the arrays
+// viewed stay where they are.
+class LoadedObjModel {
+public:
+    explicit LoadedObjModel(ObjModel parsed);
+    explicit LoadedObjModel(CacheEntry entry); // throws BlobFormatError on a damaged entry
+    const ObjModelView &view() const { return view_; }
+
+private:
+    ObjModel owned_;
+    std::optional<CacheEntry> entry_;
+    ObjModelView view_;
+};
 
 // parseObj of the file at `path` (shown as `fileName`), through the cache when `use` has one
 // and the file is at least use->minBytes long. Same errors as parseObj, and prism::Error when
 // the file cannot be read.
-ObjModel loadObjFile(const std::filesystem::path &path, const std::string &fileName,
-                     ObjCacheUse *use);
+LoadedObjModel loadObjFile(const std::filesystem::path &path, const std::string &fileName,
+                           ObjCacheUse *use);
 
 } // namespace prism

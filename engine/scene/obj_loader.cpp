@@ -202,6 +202,13 @@ void reserveFor(std::string_view text, ObjModel &model) {
 
 } // namespace
 
+ObjModel copyModel(const ObjModelView &v) {
+    return {{v.positions.begin(), v.positions.end()}, {v.uvs.begin(), v.uvs.end()},
+            {v.normals.begin(), v.normals.end()},     {v.corners.begin(), v.corners.end()},
+            {v.faces.begin(), v.faces.end()},         {v.useMtl.begin(), v.useMtl.end()},
+            {v.mtlLibs.begin(), v.mtlLibs.end()},     {v.warnings.begin(), v.warnings.end()}};
+}
+
 ObjModel parseObj(std::string_view text, const std::string &fileName) {
     ObjModel model;
     reserveFor(text, model);

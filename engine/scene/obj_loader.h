@@ -2,6 +2,7 @@
 // Our own Wavefront OBJ reader: only what a ray tracer uses, every error at its OBJ line
 // (tinyobjloader reports no line numbers and accepts NaN).
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,6 +38,8 @@ struct ObjMtlLib {
     int line = 0;
 };
 
+struct ObjModelView;
+
 struct ObjModel {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec2> uvs;
@@ -47,7 +50,28 @@ struct ObjModel {
     std::vector<ObjMtlLib> mtlLibs;
     // "FILE:LINE: warning: ..." lines, for Scene::warnings: at most one per kind of problem.
     std::vector<std::string> warnings;
+
+    ObjModelView view() const;
 };
+
+// A model's arrays, viewed where they lie: in a parsed model's own vectors (ObjModel::view), or
+// in a cache entry's mapped bytes (scene/obj_cache.h, LoadedObjModel). What the importer reads.
+struct ObjModelView {
+    std::span<const glm::vec3> positions;
+    std::span<const glm::vec2> uvs;
+    std::span<const glm::vec3> normals;
+    std::span<const ObjCorner> corners;
+    std::span<const ObjFace> faces;
+    std::span<const ObjUseMtl> useMtl;
+    std::span<const ObjMtlLib> mtlLibs;
+    std::span<const std::string> warnings;
+};
+inline ObjModelView ObjModel::view() const {
+    return {positions, uvs, normals, corners, faces, useMtl, mtlLibs, warnings};
+}
+
+// The viewed arrays copied into a model of their own.
+ObjModel copyModel(const ObjModelView &view);
 
 // Parses OBJ text. Reads v (extra w or colour values ignored), vt (u [v [w]]), vn, f (v, v/vt,
 // v//vn, v/vt/vn; negative = relative to the last one defined), s (smoothing group: a number

@@ -306,7 +306,9 @@ void mesh(SceneBuilder &builder, const DirectiveArgs &args) {
             request.smoothCreaseDegrees = crease;
         }
     }
-    ObjModel model = loadObjFile(request.objPath, displayPath(request.objPath), builder.objCache);
+    LoadedObjModel loaded =
+        loadObjFile(request.objPath, displayPath(request.objPath), builder.objCache);
+    const ObjModelView &model = loaded.view();
     builder.scene.warnings.insert(builder.scene.warnings.end(), model.warnings.begin(),
                                   model.warnings.end());
     std::vector<Triangle> prototype;
