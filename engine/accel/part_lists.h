@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "accel/cell_binner.h"
+#include "core/parallel_for.h"
 
 namespace prism {
 
@@ -64,6 +66,53 @@ template <typename RangeOf>
 PartLists sortIntoParts(const Lattice &parts, std::span<const uint32_t> refs, RangeOf rangeOf) {
     PartLists lists;
     sortIntoParts(parts, refs, rangeOf, lists);
+    return lists;
+}
+
+// The same lists, sorted on every core (parallelFor): each of `shares` consecutive runs of refs
+// is counted and placed by one thread, a run's references after the runs before it in each
+// part, so the lists are the serial sort's whatever the threads. For one large sort (the top
+// grid's: 2 of a 100k-triangle lean build's 25 ms on one thread).
+template <typename RangeOf>
+PartLists sortIntoPartsOnEveryCore(const Lattice &parts, std::span<const uint32_t> refs,
+                                   RangeOf rangeOf, size_t shares) {
+    shares = std::max<size_t>(1, std::min(shares, refs.size()));
+    size_t partCount = size_t(parts.count());
+    auto run = [&](size_t share) {
+        return std::pair{refs.size() * share / shares, refs.size() * (share + 1) / shares};
+    };
+    auto forEachPart = [&](size_t share, auto visit) {
+        auto [first, last] = run(share);
+        for (size_t i = first; i < last; ++i) {
+            const CellRange r = rangeOf(i);
+            for (int z = r.lo.z; z <= r.hi.z; ++z)
+                for (int y = r.lo.y; y <= r.hi.y; ++y)
+                    for (int x = r.lo.x; x <= r.hi.x; ++x)
+                        visit(i, parts.local({x, y, z}));
+        }
+    };
+    // cursors[share][part]: first a run's count in the part, then where it writes there.
+    std::vector<std::vector<uint32_t>> cursors(shares);
+    parallelFor(shares, [&](size_t share) {
+        cursors[share].assign(partCount, 0u);
+        forEachPart(share, [&](size_t, uint32_t part) { ++cursors[share][part]; });
+    });
+    PartLists lists;
+    lists.start.resize(partCount + 1);
+    uint32_t next = 0;
+    for (size_t part = 0; part < partCount; ++part) {
+        lists.start[part] = next;
+        for (size_t share = 0; share < shares; ++share)
+            next += std::exchange(cursors[share][part], next);
+        lists.fullest = std::max<size_t>(lists.fullest, next - lists.start[part]);
+    }
+    lists.start[partCount] = next;
+    lists.refs.resize(next);
+    parallelFor(shares, [&](size_t share) {
+        forEachPart(share, [&](size_t i, uint32_t part) {
+            lists.refs[cursors[share][part]++] = refs[i];
+        });
+    });
     return lists;
 }
 

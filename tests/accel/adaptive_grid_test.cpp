@@ -11,6 +11,7 @@
 #include "accel/adaptive_grid.h"
 #include "accel/grid.h"
 #include "accel/grid_walk.h"
+#include "accel/part_lists.h"
 #include "core/parallel_for.h"
 #include "grid_test_scenes.h"
 
@@ -314,6 +315,58 @@ TEST(AdaptiveGrid, BuildIsDeterministic) {
         SCOPED_TRACE(threads);
         test::expectSameGrid(a, adaptive(scene));
         test::expectSameGrid(twoLevel, buildGrid(scene, parseGridOption("two-level")));
+    }
+}
+
+// A scene big enough that the top cells are sorted in runs on every core and the trees' arrays
+// appended on several threads (grid_fragments.cpp): the same arrays, full and lean, at every
+// thread count.
+TEST(AdaptiveGrid, ALargeBuildIsTheSameAtEveryThreadCount) {
+    Scene scene = test::clusterInARoom(46, 30'000, 200);
+    GridOptions full = parseGridOption("adaptive"), lean = full;
+    lean.effort = GridOptions::Effort::Lean;
+    Grid one, oneLean;
+    {
+        ParallelThreads limit(1);
+        one = buildGrid(scene, full);
+        oneLean = buildGrid(scene, lean);
+    }
+    ASSERT_GT(one.cellBoxes.size() + one.cellPrimitives.size(), 65'536u);
+    ASSERT_TRUE(oneLean.lean);
+    for (unsigned threads : {2u, 3u, 8u}) {
+        ParallelThreads limit(threads);
+        SCOPED_TRACE(threads);
+        test::expectSameGrid(one, buildGrid(scene, full));
+        test::expectSameGrid(oneLean, buildGrid(scene, lean));
+    }
+}
+
+// The sort in runs on every core lists what the serial sort lists, in the same order, however
+// many runs: references that meet one part or several, parts that stay empty.
+TEST(PartLists, SortedOnEveryCoreAsInOne) {
+    Lattice parts;
+    parts.lo = glm::ivec3(0);
+    parts.hi = glm::ivec3(7, 5, 3);
+    std::mt19937 rng(11);
+    std::vector<CellRange> ranges;
+    for (int i = 0; i < 5000; ++i) {
+        glm::ivec3 lo(int(rng() % 7), int(rng() % 5), int(rng() % 3));
+        glm::ivec3 hi = glm::min(lo + glm::ivec3(int(rng() % 3)), parts.hi - 1);
+        ranges.push_back({lo, hi});
+    }
+    std::vector<uint32_t> refs(ranges.size());
+    for (uint32_t i = 0; i < refs.size(); ++i)
+        refs[i] = 3 * i + 1;
+    auto rangeOf = [&](size_t i) { return ranges[i]; };
+    PartLists serial = sortIntoParts(parts, refs, rangeOf);
+    for (size_t shares : {1u, 2u, 3u, 7u}) {
+        for (unsigned threads : {1u, 2u}) {
+            ParallelThreads limit(threads);
+            PartLists lists = sortIntoPartsOnEveryCore(parts, refs, rangeOf, shares);
+            EXPECT_EQ(lists.start, serial.start) << shares << " runs";
+            EXPECT_EQ(lists.refs, serial.refs) << shares << " runs";
+            EXPECT_EQ(lists.fullest, serial.fullest) << shares << " runs";
+        }
     }
 }
 
