@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <span>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -98,25 +100,68 @@ private:
     std::array<uint8_t, 1024> table_{};
 };
 
-// Part lists to sort into, one a level, kept by each thread across the top cells it builds:
-// a build sorts at every split it makes, and fresh lists allocated three vectors each time.
-std::vector<PartLists> &levelScratch() {
-    static thread_local std::vector<PartLists> scratch;
-    return scratch;
-}
+// What a thread builds top cells' trees with, kept across the top cells it builds: the part
+// lists to sort into, one a level (a build sorts at every split it makes, and fresh lists
+// allocated three vectors each time), the empty-part merge's marks, and the fragment a tree is
+// built into, then copied into the top cell's own at its size (built in place, its four
+// vectors grew from nothing by doubling: some thirty allocations and copies a top cell, of
+// some 4,000 trees at 100k triangles).
+struct TreeScratch {
+    std::vector<PartLists> levels;
+    std::vector<uint8_t> taken;
+    Fragment fragment;
 
-// A top cell's tree is built into a fragment each thread keeps, then copied into the top cell's
-// own at its size: built in place, its four vectors grew from nothing by doubling, some thirty
-// allocations and copies a top cell (a 100k-triangle lean build makes some 4,000 trees).
-Fragment &fragmentScratch() {
-    static thread_local Fragment scratch;
-    scratch.entries.assign(1, 0u);
-    scratch.cellBoxes.clear();
-    scratch.cellCounts.clear();
-    scratch.cellPrimitives.clear();
-    scratch.depth = scratch.maxPerCell = 0;
-    return scratch;
-}
+    Fragment &freshFragment() {
+        fragment.entries.assign(1, 0u);
+        fragment.cellBoxes.clear();
+        fragment.cellCounts.clear();
+        fragment.cellPrimitives.clear();
+        fragment.depth = fragment.maxPerCell = 0;
+        return fragment;
+    }
+};
+
+// TreeScratch for every thread at work, lent to one task at a time and kept for the next
+// build. Not thread_local: a thread_local with a destructor registers it at the thread's first
+// use, under the dynamic loader's lock, which OpenImageIO's load holds for ~200 ms as
+// prism-render starts: a 100k-triangle build that took 20 ms waited 200 for it (benchmarks.md,
+// thirtieth session). Each slot on a cache line of its own, as two threads take and give back
+// theirs at every top cell.
+class TreeScratchSlots {
+public:
+    // The process's: shared by builds running at once, each task taking a free slot.
+    static TreeScratchSlots &shared() {
+        static TreeScratchSlots slots(std::max(64u, std::thread::hardware_concurrency()));
+        return slots;
+    }
+
+    // Runs work(scratch) on a scratch no other task holds meanwhile (one of its own where
+    // every slot is taken).
+    template <typename Work> void lend(Work work) {
+        for (Slot &slot : slots_) {
+            bool expected = false;
+            if (slot.busy.compare_exchange_strong(expected, true, std::memory_order_acquire)) {
+                struct Release {
+                    std::atomic<bool> &busy;
+                    ~Release() { busy.store(false, std::memory_order_release); }
+                } release{slot.busy};
+                work(slot.scratch);
+                return;
+            }
+        }
+        TreeScratch own;
+        work(own);
+    }
+
+private:
+    explicit TreeScratchSlots(size_t slots) : slots_(slots) {}
+
+    struct alignas(64) Slot {
+        std::atomic<bool> busy{false};
+        TreeScratch scratch;
+    };
+    std::vector<Slot> slots_;
+};
 
 void copyAtItsSize(const Fragment &from, Fragment &to) {
     to.entries.assign(from.entries.begin(), from.entries.end());
@@ -129,12 +174,13 @@ void copyAtItsSize(const Fragment &from, Fragment &to) {
 
 class Splitter {
 public:
-    Splitter(Fragment &out, const Grid &grid, const FinitePrimitives &primitives,
+    Splitter(TreeScratch &scratch, const Grid &grid, const FinitePrimitives &primitives,
              const std::vector<VoxelBounds> &voxels, const PartRanges &ranges,
              const SplitsByCount &splits, double magnitude, size_t budget,
              const AdaptiveStyle &style)
-        : out_(out), grid_(grid), primitives_(primitives), voxels_(voxels), ranges_(ranges),
-          splits_(splits), scratch_(levelScratch()), magnitude_(magnitude),
+        : out_(scratch.freshFragment()), grid_(grid), primitives_(primitives), voxels_(voxels),
+          ranges_(ranges), splits_(splits), scratch_(scratch.levels), taken_(scratch.taken),
+          magnitude_(magnitude),
           voxelSize_(glm::dvec3(grid.voxelSize())), budget_(budget), style_(style) {
         // Splits are made above style.maxDepth only; the buffers only grow, before any list is
         // read, so no reference into them moves.
@@ -311,7 +357,8 @@ private:
                         for (int x = lo.x; x < hi.x; ++x)
                             out_.entries[first + uint32_t(x + size.x * (y + size.y * z))] =
                                 uint32_t(cell) << 4;
-            });
+            },
+            taken_);
     }
 
     // Appends a cell with the given box whose `count` primitives the caller appends.
@@ -332,6 +379,7 @@ private:
     const PartRanges &ranges_;
     const SplitsByCount &splits_;
     std::vector<PartLists> &scratch_; // by level: sized for every level a split is made at
+    std::vector<uint8_t> &taken_;     // the empty-part merge's
     double magnitude_;
     glm::dvec3 voxelSize_;
     size_t budget_;
@@ -372,6 +420,7 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
     // then a few large cells, which the expansion grows further, instead of many cells that it
     // grows by three neighbours at most.
     std::vector<Fragment> fragments(top.count());
+    std::vector<uint8_t> taken;
     if (style.mergeEmptyParts)
         mergeEmptyBoxes(
             top.size(), [&](uint32_t t) { return topRefs.empty(t); },
@@ -385,9 +434,11 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
                         for (int x = lo.x; x < hi.x; ++x)
                             if (uint32_t t = top.local({x, y, z}); t != first)
                                 fragments[t].sameCellAs = first;
-            });
+            },
+            taken);
     // Cells and entries at most ~64 per primitive a top cell holds (and a floor for small
     // cells): a safety net on memory and build time, far above what the cost model asks for.
+    TreeScratchSlots &slots = TreeScratchSlots::shared();
     parallelFor(top.count(), [&](size_t t) {
         if (!fragments[t].cellBoxes.empty() || fragments[t].sameCellAs >= 0)
             return; // a merged empty top cell
@@ -396,11 +447,12 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
                         int(t / (uint64_t(grid.resolution.x) * uint32_t(grid.resolution.y))));
         std::span<const uint32_t> refs = topRefs.list(t);
         size_t budget = 64 * refs.size() + 4096;
-        Fragment &built = fragmentScratch();
-        Splitter splitter(built, grid, primitives, voxels, ranges, splits, top.magnitude, budget,
-                          style);
-        splitter.build(0, cell << int(grid.shift), grid.shift, 0, 0, refs);
-        copyAtItsSize(built, fragments[t]);
+        slots.lend([&](TreeScratch &scratch) {
+            Splitter splitter(scratch, grid, primitives, voxels, ranges, splits, top.magnitude,
+                              budget, style);
+            splitter.build(0, cell << int(grid.shift), grid.shift, 0, 0, refs);
+            copyAtItsSize(scratch.fragment, fragments[t]);
+        });
     });
     joinFragments(grid, fragments);
     if (style.expand && !grid.lean)

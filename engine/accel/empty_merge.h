@@ -14,13 +14,12 @@ namespace prism {
 
 // Calls box(lo, hi) for boxes [lo, hi) of the lattice of `size` cells, numbered x fastest,
 // that cover every cell i where empty(i) holds, each in exactly one box, and no other.
+// `taken` is the merge's marks, the caller's to reuse: a build merges the parts of every split
+// it makes (at a million triangles, hundreds of thousands of small lattices), and an
+// allocation for each was a fifth of the merge's time.
 template <typename Empty, typename Box>
-void mergeEmptyBoxes(glm::ivec3 size, Empty empty, Box box) {
+void mergeEmptyBoxes(glm::ivec3 size, Empty empty, Box box, std::vector<uint8_t> &taken) {
     auto index = [&](glm::ivec3 c) { return uint32_t(c.x + size.x * (c.y + size.y * c.z)); };
-    // One buffer a thread, reused: a build merges the parts of every split it makes (at a
-    // million triangles, hundreds of thousands of small lattices), and an allocation for each
-    // was a fifth of the merge's time.
-    static thread_local std::vector<uint8_t> taken;
     taken.assign(size_t(size.x) * size_t(size.y) * size_t(size.z), 0);
     auto untaken = [&](glm::ivec3 c) { return empty(index(c)) && !taken[index(c)]; };
     auto untakenBox = [&](glm::ivec3 lo, glm::ivec3 hi) {
