@@ -122,10 +122,20 @@ std::string meshGridsKey(const Scene &scene) {
 
 std::string packGrid(const Grid &grid) {
     BlobWriter out;
-    out.reserve(size_t(grid.bytes()) + 4096);
     packInto(out, grid);
     return out.take();
 }
+
+namespace {
+
+// The grid's entry, its arrays borrowed from it.
+BlobWriter gridRecord(const Grid &grid) {
+    BlobWriter out;
+    packInto(out, grid);
+    return out;
+}
+
+} // namespace
 
 Grid unpackGrid(std::string_view bytes) {
     BlobReader in(bytes);
@@ -159,7 +169,7 @@ Grid buildGridCached(const Scene &scene, const GridOptions &options, const GridC
     }
     Grid grid = buildGrid(scene, options);
     timer.reset();
-    policy.cache->store("grid", o.key, kGridCacheFormat, packGrid(grid));
+    policy.cache->store("grid", o.key, kGridCacheFormat, gridRecord(grid).pieces());
     o.storeMs = timer.elapsedMs();
     o.state = "miss";
     return grid;

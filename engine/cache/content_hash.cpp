@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+// The state's layout, for a digest state on the stack (checksum64 of pieces).
+#define XXH_STATIC_LINKING_ONLY
 #include <xxhash.h>
 
 #include "core/error.h"
@@ -39,6 +41,19 @@ std::string ContentHash::hex() const {
 
 uint64_t checksum64(const void *data, size_t size) {
     return XXH3_64bits(data, size);
+}
+
+uint64_t checksum64(std::span<const std::string_view> pieces) {
+    if (pieces.size() == 1)
+        return checksum64(pieces[0].data(), pieces[0].size());
+    // XXH3's streaming digest is its one-shot digest of everything given (xxhash.h); the state
+    // on the stack, so that DiskCache::store, which never throws, allocates nothing for it.
+    XXH3_state_t state;
+    XXH3_INITSTATE(&state);
+    XXH3_64bits_reset(&state);
+    for (std::string_view piece : pieces)
+        XXH3_64bits_update(&state, piece.data(), piece.size());
+    return XXH3_64bits_digest(&state);
 }
 
 } // namespace prism

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -47,5 +48,7 @@ private:
 
 // XXH3's 64-bit digest of `size` bytes.
 uint64_t checksum64(const void *data, size_t size);
+// The same digest of the pieces' bytes one after the other, as if they were one array.
+uint64_t checksum64(std::span<const std::string_view> pieces);
 
 } // namespace prism

@@ -123,6 +123,11 @@ void DiskCache::discard(std::string_view kind, std::string_view key, const std::
 
 void DiskCache::store(std::string_view kind, std::string_view key, uint32_t format,
                       std::string_view payload) const {
+    store(kind, key, format, std::span<const std::string_view>(&payload, 1));
+}
+
+void DiskCache::store(std::string_view kind, std::string_view key, uint32_t format,
+                      std::span<const std::string_view> pieces) const {
     if (options_.directory.empty() || key.size() > sizeof(EntryHeader::key))
         return;
     std::error_code ec;
@@ -140,11 +145,14 @@ void DiskCache::store(std::string_view kind, std::string_view key, uint32_t form
     std::memcpy(header.magic, kMagic, sizeof kMagic);
     header.format = format;
     header.keyLength = uint32_t(key.size());
-    header.payloadBytes = payload.size();
-    header.payloadChecksum = checksum64(payload.data(), payload.size());
+    header.payloadBytes = 0;
+    for (std::string_view piece : pieces)
+        header.payloadBytes += piece.size();
+    header.payloadChecksum = checksum64(pieces);
     std::memcpy(header.key, key.data(), key.size());
-    bool written = writeAll(fd, reinterpret_cast<const char *>(&header), sizeof header) &&
-                   writeAll(fd, payload.data(), payload.size());
+    bool written = writeAll(fd, reinterpret_cast<const char *>(&header), sizeof header);
+    for (std::string_view piece : pieces)
+        written = written && writeAll(fd, piece.data(), piece.size());
     written = ::close(fd) == 0 && written;
     if (!written || std::rename(temporary.c_str(), path.c_str()) != 0) {
         warn("cannot write '" + path.string() + "' (disk full?); going on without it");

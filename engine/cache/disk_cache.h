@@ -17,6 +17,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -57,6 +58,10 @@ public:
     // Stores `payload` under (kind, key), then trims the cache to its size. Never throws.
     void store(std::string_view kind, std::string_view key, uint32_t format,
                std::string_view payload) const;
+    // The same, the payload the pieces' bytes one after the other (cache/blob.h, BlobWriter):
+    // written as they lie, never gathered into one copy.
+    void store(std::string_view kind, std::string_view key, uint32_t format,
+               std::span<const std::string_view> pieces) const;
 
     const std::filesystem::path &directory() const { return options_.directory; }
     std::filesystem::path entryPath(std::string_view kind, std::string_view key) const;

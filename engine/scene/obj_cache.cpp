@@ -60,11 +60,27 @@ void checkIndices(const ObjModelView &m) {
     }
 }
 
+// The model's entry, its arrays borrowed from it.
+BlobWriter objRecord(const ObjModel &model) {
+    BlobWriter out;
+    out.values(model.positions);
+    out.values(model.uvs);
+    out.values(model.normals);
+    out.values(model.corners);
+    out.values(model.faces);
+    packNamed(out, model.useMtl);
+    packNamed(out, model.mtlLibs);
+    out.value(uint64_t(model.warnings.size()));
+    for (const std::string &w : model.warnings)
+        out.text(w);
+    return out;
+}
+
 ObjModel parseAndStore(std::string_view bytes, const std::string &fileName, const std::string &key,
                        ObjCacheUse &use) {
     ObjModel model = parseObj(bytes, fileName); // a file with errors throws: nothing stored
     Timer timer;
-    use.cache->store("obj", key, kObjCacheFormat, packObjModel(model));
+    use.cache->store("obj", key, kObjCacheFormat, objRecord(model).pieces());
     use.storeMs += timer.elapsedMs();
     ++use.misses;
     return model;
@@ -81,22 +97,7 @@ std::string objCacheKey(std::string_view fileBytes, const std::string &fileName)
 }
 
 std::string packObjModel(const ObjModel &model) {
-    BlobWriter out;
-    out.reserve(model.positions.size() * sizeof(glm::vec3) + model.uvs.size() * sizeof(glm::vec2) +
-                model.normals.size() * sizeof(glm::vec3) +
-                model.corners.size() * sizeof(ObjCorner) + model.faces.size() * sizeof(ObjFace) +
-                4096);
-    out.values(model.positions);
-    out.values(model.uvs);
-    out.values(model.normals);
-    out.values(model.corners);
-    out.values(model.faces);
-    packNamed(out, model.useMtl);
-    packNamed(out, model.mtlLibs);
-    out.value(uint64_t(model.warnings.size()));
-    for (const std::string &w : model.warnings)
-        out.text(w);
-    return out.take();
+    return objRecord(model).take();
 }
 
 ObjModelView viewObjModel(std::string_view bytes, ObjModel &rest) {

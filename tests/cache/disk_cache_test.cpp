@@ -8,10 +8,12 @@
 
 #include <chrono>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "cache/blob.h"
 #include "cache/disk_cache.h"
 #include "temp_dir.h"
 
@@ -54,6 +56,55 @@ TEST(DiskCache, GivesBackWhatWasStored) {
     EXPECT_FALSE(f.cache.load("mesh", kKey, 1).has_value()) << "kinds are apart";
     EXPECT_TRUE(f.warnings.empty());
     EXPECT_EQ(filesIn(f.cache.directory()), 1u) << "no temporary file left behind";
+}
+
+// An entry stored in pieces (cache/blob.h) is the entry of their bytes stored as one: the same
+// file byte for byte (payload, size and checksum), read back whole.
+TEST(DiskCache, PiecesAreStoredAsTheirBytesInOne) {
+    Fixture f;
+    std::string a = payload(10, 1), b = payload(300'000, 2), c = payload(7, 3);
+    std::vector<std::string_view> pieces{a, b, "", c};
+    f.cache.store("grid", kKey, 1, pieces);
+    std::optional<CacheEntry> back = f.cache.load("grid", kKey, 1);
+    ASSERT_TRUE(back.has_value());
+    EXPECT_EQ(back->payload, a + b + c);
+    auto fileBytes = [](const std::filesystem::path &path) {
+        std::ifstream in(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    std::string inPieces = fileBytes(f.cache.entryPath("grid", kKey));
+    back.reset();
+    f.cache.store("grid", kKey, 1, a + b + c);
+    EXPECT_EQ(fileBytes(f.cache.entryPath("grid", kKey)), inPieces);
+    EXPECT_TRUE(f.warnings.empty());
+}
+
+// A record's large arrays are borrowed where their vectors hold them, its small values copied;
+// the pieces' bytes in order are the one string take() gives, which reads back as written.
+TEST(BlobWriter, LargeArraysAreBorrowedAndThePiecesAreTheRecord) {
+    std::vector<uint32_t> large(5000), small{7, 8, 9};
+    for (uint32_t i = 0; i < large.size(); ++i)
+        large[i] = i * 3u;
+    BlobWriter out;
+    out.value(uint32_t(42));
+    out.values(small);
+    out.values(large);
+    out.text("after");
+    out.values(std::vector<uint64_t>{});
+    std::vector<std::string_view> pieces = out.pieces();
+    ASSERT_EQ(pieces.size(), 3u) << "values, the large array, values";
+    EXPECT_EQ(static_cast<const void *>(pieces[1].data()), static_cast<const void *>(large.data()));
+    std::string whole = out.take(), joined;
+    for (std::string_view piece : pieces)
+        joined += piece;
+    EXPECT_EQ(joined, whole);
+    BlobReader in(whole);
+    EXPECT_EQ(in.value<uint32_t>(), 42u);
+    EXPECT_EQ(in.values<uint32_t>(), small);
+    EXPECT_EQ(in.values<uint32_t>(), large);
+    EXPECT_EQ(in.text(), "after");
+    EXPECT_TRUE(in.values<uint64_t>().empty());
+    EXPECT_TRUE(in.atEnd());
 }
 
 // Each way an entry can go bad: the next load warns once, removes it and reports nothing.
