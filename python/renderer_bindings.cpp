@@ -128,6 +128,9 @@ public:
         double tracerMs = 0.0, readbackMs = 0.0;
         std::vector<ArrayBytes> sceneArrays;
         Camera camera = scene->camera;
+        // Taken while the GIL is held: a frame set from another Python thread meanwhile swaps
+        // scene->prepared, and the tracer's scene, grid and extent must come from one.
+        std::shared_ptr<const PreparedScene> prepared = scene->prepared;
         uint32_t messagesBefore = context_->validationMessageCount();
         {
             py::gil_scoped_release released; // Python threads run while this one renders
@@ -139,20 +142,20 @@ public:
                 TracerOptions options;
                 options.maxDepth = depth;
                 options.writeAov = key.aov;
-                const std::optional<SceneExtent> &extent = scene->prepared->extent;
+                const std::optional<SceneExtent> &extent = prepared->extent;
                 options.extent = extent ? &*extent : nullptr;
                 tracer_ =
-                    std::make_unique<RayTracer>(*context_, scene->prepared->scene,
-                                                scene->prepared->grid, width, height, options);
+                    std::make_unique<RayTracer>(*context_, prepared->scene,
+                                                prepared->grid, width, height, options);
                 tracerMs = made.elapsedMs();
                 key_ = key;
-                keptScene_ = scene->prepared; // the tracer's scene stays alive with it
-            } else if (keptScene_ != scene->prepared) {
+                keptScene_ = prepared; // the tracer's scene stays alive with it
+            } else if (keptScene_ != prepared) {
                 // The same scene at another frame: its instances moved (scene.frame).
                 Timer moved;
-                tracer_->setScene(scene->prepared->scene, scene->prepared->grid);
+                tracer_->setScene(prepared->scene, prepared->grid);
                 tracerMs = moved.elapsedMs();
-                keptScene_ = scene->prepared;
+                keptScene_ = prepared;
             }
             tracer_->setSeed(seed);
             frame = tracer_->renderFrame(camera, spp, {}, true); // copied out in its submission

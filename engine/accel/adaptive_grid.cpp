@@ -125,8 +125,10 @@ struct TreeScratch {
 // build. Not thread_local: a thread_local with a destructor registers it at the thread's first
 // use, under the dynamic loader's lock, which OpenImageIO's load holds for ~200 ms as
 // prism-render starts: a 100k-triangle build that took 20 ms waited 200 for it (benchmarks.md,
-// thirtieth session). Each slot on a cache line of its own, as two threads take and give back
-// theirs at every top cell.
+// thirtieth session). Each flag on a cache line of its own, apart from the scratch its holder
+// writes, as every thread takes and gives back a slot at each top cell. A process forked
+// during a build finds the flags its parent's threads held set, and builds on scratch of its
+// own.
 class TreeScratchSlots {
 public:
     // The process's: shared by builds running at once, each task taking a free slot.
@@ -140,7 +142,8 @@ public:
     template <typename Work> void lend(Work work) {
         for (Slot &slot : slots_) {
             bool expected = false;
-            if (slot.busy.compare_exchange_strong(expected, true, std::memory_order_acquire)) {
+            if (!slot.busy.load(std::memory_order_relaxed) &&
+                slot.busy.compare_exchange_strong(expected, true, std::memory_order_acquire)) {
                 struct Release {
                     std::atomic<bool> &busy;
                     ~Release() { busy.store(false, std::memory_order_release); }
@@ -156,9 +159,9 @@ public:
 private:
     explicit TreeScratchSlots(size_t slots) : slots_(slots) {}
 
-    struct alignas(64) Slot {
-        std::atomic<bool> busy{false};
-        TreeScratch scratch;
+    struct Slot {
+        alignas(64) std::atomic<bool> busy{false};
+        alignas(64) TreeScratch scratch;
     };
     std::vector<Slot> slots_;
 };

@@ -35,8 +35,8 @@ void release(Fragment &f) {
 } // namespace
 
 void joinFragments(Grid &grid, std::vector<Fragment> &fragments) {
-    // Each fragment's place follows from the sizes of those before it (a prefix sum); then
-    // every fragment is copied to its own place, in parallel, into arrays sized once.
+    // Each fragment's place follows from the sizes of those before it (a prefix sum), which
+    // renumbers its entries; then each array is appended (below).
     std::vector<FragmentBase> bases(fragments.size());
     FragmentBase end{fragments.size(), 0, 0};
     grid.depth = 0;

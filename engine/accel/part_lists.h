@@ -76,8 +76,10 @@ PartLists sortIntoParts(const Lattice &parts, std::span<const uint32_t> refs, Ra
 template <typename RangeOf>
 PartLists sortIntoPartsOnEveryCore(const Lattice &parts, std::span<const uint32_t> refs,
                                    RangeOf rangeOf, size_t shares) {
-    shares = std::max<size_t>(1, std::min(shares, refs.size()));
     size_t partCount = size_t(parts.count());
+    // Each run counts into an array of every part: no more runs than refs fill a part's worth
+    // of them, so the counts stay under the refs' own size whatever the cores.
+    shares = std::max<size_t>(1, std::min(shares, refs.size() / std::max<size_t>(1, partCount)));
     auto run = [&](size_t share) {
         return std::pair{refs.size() * share / shares, refs.size() * (share + 1) / shares};
     };

@@ -59,8 +59,9 @@ RayTracer::RayTracer(vk::Context &context, const Scene &scene, const Grid &grid,
             context, runner_,
             packScene(scene, grid, features_.cellTriangles, features_.cellSpheres), limits_,
             options.stagedUpload ? UploadPath::Staged : UploadPath::InPlaceWhereShared);
-        extent_ = options.extent ? *options.extent
-                                 : sceneExtent(scene, grid, options.maxStartBoxes);
+        extent_ = options.extent && options.maxStartBoxes == kMaxStartBoxes
+                      ? *options.extent
+                      : sceneExtent(scene, grid, options.maxStartBoxes);
     };
     if (scene.finitePrimitiveCount() >= options.compileBesideUploadFrom) {
         compileBeside(writeArrays);

@@ -58,9 +58,10 @@ struct TracerOptions {
     // At most this many start blocks (render/traced_tiles.h, kMaxStartBoxes): every frame projects
     // each on the host. Other values only to measure the trade (prism-bench start-boxes=N).
     size_t maxStartBoxes = kMaxStartBoxes;
-    // The scene's extent found already, sceneExtent(scene, grid, maxStartBoxes) of the scene and
+    // The scene's extent found already, sceneExtent(scene, grid, kMaxStartBoxes) of the scene and
     // grid the tracer is made with (PreparedScene::extent, read from the cache where it was
-    // kept): the constructor copies it instead of finding it again. Null: found there.
+    // kept): the constructor copies it instead of finding it again. Null, or another
+    // maxStartBoxes than kMaxStartBoxes: found there.
     const SceneExtent *extent = nullptr;
     // On lavapipe, each thread's share of a dispatch takes every n-th row in order (n threads:
     // render/traced_tiles.h, spreadRowOrder); off: rows in bit-reversed order, as for a device

@@ -21,13 +21,13 @@ struct PreparedScene {
     Scene scene; // centred: Scene::origin holds the shift from the file's coordinates
     Grid grid;
     GridCacheOutcome gridCache;
-    double buildMs = 0.0; // the grid's build or cache read
+    double buildMs = 0.0; // the grid's build or cache read, and the extent's
     GridOptions gridOptions; // what the grid was built with
     // sceneExtent(scene, grid) with the tracer's default start-box cap, for the tracer
     // (TracerOptions::extent); none once moveToFrame has moved an instance (the tracer's
     // setScene finds its own).
     std::optional<SceneExtent> extent;
-    ExtentCacheOutcome extentCache;
+    ExtentCacheOutcome extentCache; // how it was found (kept when moveToFrame drops it)
     // The frame Scene::instances and the grid hold: 1 until moveToFrame moves keyed instances.
     double frame = 1.0;
 };

@@ -841,6 +841,13 @@ TEST_F(TracedTilesRender, AGivenExtentIsTheOneTracedBy) {
     EXPECT_NE(empty.image.rgba, own.image.rgba);
     EXPECT_EQ(empty.frame.rays.shadow, 0u) << "no tile traced the geometry";
     EXPECT_GT(own.frame.rays.shadow, 0u);
+    // An extent is found with one start-box cap: a tracer asked for another finds its own.
+    TracerOptions capped;
+    capped.maxStartBoxes = 64;
+    capped.extent = &nothing;
+    RayTracer tracer(context(), scene, grid, 70, 50, capped);
+    tracer.renderFrame(scene.camera, 1);
+    EXPECT_EQ(tracer.readback(1).rgba, own.image.rgba);
 }
 
 // The eye inside a large sphere (its blocks there left out of the extent: rays reach them only
