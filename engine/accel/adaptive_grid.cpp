@@ -183,8 +183,8 @@ public:
              const AdaptiveStyle &style)
         : out_(scratch.freshFragment()), grid_(grid), primitives_(primitives), voxels_(voxels),
           ranges_(ranges), splits_(splits), scratch_(scratch.levels), taken_(scratch.taken),
-          magnitude_(magnitude),
-          voxelSize_(glm::dvec3(grid.voxelSize())), budget_(budget), style_(style) {
+          magnitude_(magnitude), voxelSize_(glm::dvec3(grid.voxelSize())), budget_(budget),
+          style_(style) {
         // Splits are made above style.maxDepth only; the buffers only grow, before any list is
         // read, so no reference into them moves.
         if (scratch_.size() < style.maxDepth)
@@ -412,9 +412,9 @@ void buildAdaptiveCells(Grid &grid, const FinitePrimitives &primitives, const Gr
     });
     PartRanges ranges(grid, top.magnitude);
     SplitsByCount splits(double(options.density));
-    PartLists topRefs =
-        sortIntoPartsOnEveryCore(top, ids, [&](size_t i) { return ranges.range(voxels[i], top, grid.shift); },
-                                 parallelThreadCount());
+    PartLists topRefs = sortIntoPartsOnEveryCore(
+        top, ids, [&](size_t i) { return ranges.range(voxels[i], top, grid.shift); },
+        parallelThreadCount());
     ids = {};
 
     // Empty top cells are merged as a split's empty parts are: the first top cell of each box

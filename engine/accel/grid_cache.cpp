@@ -120,12 +120,6 @@ std::string meshGridsKey(const Scene &scene) {
     return hash.hex();
 }
 
-std::string packGrid(const Grid &grid) {
-    BlobWriter out;
-    packInto(out, grid);
-    return out.take();
-}
-
 namespace {
 
 // The grid's entry, its arrays borrowed from it.
@@ -136,6 +130,10 @@ BlobWriter gridRecord(const Grid &grid) {
 }
 
 } // namespace
+
+std::string packGrid(const Grid &grid) {
+    return gridRecord(grid).take();
+}
 
 Grid unpackGrid(std::string_view bytes) {
     BlobReader in(bytes);

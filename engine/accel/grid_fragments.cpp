@@ -1,6 +1,8 @@
 #include "accel/grid_fragments.h"
 
 #include <algorithm>
+#include <array>
+#include <functional>
 
 #include "core/error.h"
 #include "core/parallel_for.h"
@@ -98,14 +100,9 @@ void joinFragments(Grid &grid, std::vector<Fragment> &fragments) {
     };
     // The two largest first, so that two threads take one of them each; a small grid's on
     // this thread, without waking another.
-    auto append = [&](size_t array) {
-        switch (array) {
-        case 0: cellBoxes(); break;
-        case 1: cellPrimitives(); break;
-        case 2: entries(); break;
-        default: cellStart(); break;
-        }
-    };
+    const std::array<std::function<void()>, 4> appends{cellBoxes, cellPrimitives, entries,
+                                                       cellStart};
+    auto append = [&](size_t array) { appends[array](); };
     if (end.cell + end.reference < kParallelJoinFrom) {
         for (size_t array = 0; array < 4; ++array)
             append(array);

@@ -36,20 +36,26 @@ struct PartLists {
     bool empty(size_t part) const { return start[part + 1] == start[part]; }
 };
 
+// visit(i, part) for each i in [first, last) and each part of `parts` in rangeOf(i), in order:
+// both sorts' passes.
+template <typename RangeOf, typename Visit>
+void forEachPartMet(const Lattice &parts, size_t first, size_t last, RangeOf &rangeOf,
+                    Visit visit) {
+    for (size_t i = first; i < last; ++i) {
+        const CellRange r = rangeOf(i);
+        for (int z = r.lo.z; z <= r.hi.z; ++z)
+            for (int y = r.lo.y; y <= r.hi.y; ++y)
+                for (int x = r.lo.x; x <= r.hi.x; ++x)
+                    visit(i, parts.local({x, y, z}));
+    }
+}
+
 // refs[i] goes to every part of `parts` in rangeOf(i) (a CellRange), into `lists`, whose
 // vectors keep their capacity (a build sorts at every split; reused lists allocate no more).
 template <typename RangeOf>
 void sortIntoParts(const Lattice &parts, std::span<const uint32_t> refs, RangeOf rangeOf,
                    PartLists &lists) {
-    auto forEachPart = [&](auto visit) {
-        for (size_t i = 0; i < refs.size(); ++i) {
-            const CellRange r = rangeOf(i);
-            for (int z = r.lo.z; z <= r.hi.z; ++z)
-                for (int y = r.lo.y; y <= r.hi.y; ++y)
-                    for (int x = r.lo.x; x <= r.hi.x; ++x)
-                        visit(i, parts.local({x, y, z}));
-        }
-    };
+    auto forEachPart = [&](auto visit) { forEachPartMet(parts, 0, refs.size(), rangeOf, visit); };
     lists.fullest = 0;
     lists.start.assign(size_t(parts.count()) + 1, 0u);
     forEachPart([&](size_t, uint32_t part) { ++lists.start[part + 1]; });
@@ -80,18 +86,10 @@ PartLists sortIntoPartsOnEveryCore(const Lattice &parts, std::span<const uint32_
     // Each run counts into an array of every part: no more runs than refs fill a part's worth
     // of them, so the counts stay under the refs' own size whatever the cores.
     shares = std::max<size_t>(1, std::min(shares, refs.size() / std::max<size_t>(1, partCount)));
-    auto run = [&](size_t share) {
-        return std::pair{refs.size() * share / shares, refs.size() * (share + 1) / shares};
-    };
+    // Run `share` of the refs.
     auto forEachPart = [&](size_t share, auto visit) {
-        auto [first, last] = run(share);
-        for (size_t i = first; i < last; ++i) {
-            const CellRange r = rangeOf(i);
-            for (int z = r.lo.z; z <= r.hi.z; ++z)
-                for (int y = r.lo.y; y <= r.hi.y; ++y)
-                    for (int x = r.lo.x; x <= r.hi.x; ++x)
-                        visit(i, parts.local({x, y, z}));
-        }
+        forEachPartMet(parts, refs.size() * share / shares, refs.size() * (share + 1) / shares,
+                       rangeOf, visit);
     };
     // cursors[share][part]: first a run's count in the part, then where it writes there.
     std::vector<std::vector<uint32_t>> cursors(shares);
@@ -111,9 +109,8 @@ PartLists sortIntoPartsOnEveryCore(const Lattice &parts, std::span<const uint32_
     lists.start[partCount] = next;
     lists.refs.resize(next);
     parallelFor(shares, [&](size_t share) {
-        forEachPart(share, [&](size_t i, uint32_t part) {
-            lists.refs[cursors[share][part]++] = refs[i];
-        });
+        forEachPart(share,
+                    [&](size_t i, uint32_t part) { lists.refs[cursors[share][part]++] = refs[i]; });
     });
     return lists;
 }

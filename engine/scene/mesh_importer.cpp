@@ -158,8 +158,9 @@ MeshImportResult MeshImporter::import(const ObjModelView &model, const MeshReque
     return result;
 }
 
-std::vector<uint32_t> MeshImporter::slotMaterials(const ObjModelView &model, const MeshRequest &request,
-                                                  Scene &scene, TextureCache &textures) {
+std::vector<uint32_t> MeshImporter::slotMaterials(const ObjModelView &model,
+                                                  const MeshRequest &request, Scene &scene,
+                                                  TextureCache &textures) {
     std::vector<const LoadedLibrary *> libraries = loadLibraries(model, request, scene);
     std::vector<bool> used(model.useMtl.size(), false);
     for (const ObjFace &face : model.faces)

@@ -14,8 +14,8 @@ PreparedScene prepareScene(Scene scene, const GridOptions &options, const DiskCa
     // in any range (scene_origin.h).
     centerOnCamera(prepared.scene);
     Timer build;
-    prepared.grid = buildGridCached(prepared.scene, options, GridCachePolicy{cache},
-                                    &prepared.gridCache);
+    prepared.grid =
+        buildGridCached(prepared.scene, options, GridCachePolicy{cache}, &prepared.gridCache);
     // Part of the build phase: what the grid's arrays come to on the image, found where
     // every core is free (the tracer's own set-up runs beside its compile on one).
     prepared.extent = sceneExtentCached(prepared.scene, prepared.grid, kMaxStartBoxes, cache,

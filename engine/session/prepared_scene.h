@@ -21,7 +21,7 @@ struct PreparedScene {
     Scene scene; // centred: Scene::origin holds the shift from the file's coordinates
     Grid grid;
     GridCacheOutcome gridCache;
-    double buildMs = 0.0; // the grid's build or cache read, and the extent's
+    double buildMs = 0.0;    // the grid's build or cache read, and the extent's
     GridOptions gridOptions; // what the grid was built with
     // sceneExtent(scene, grid) with the tracer's default start-box cap, for the tracer
     // (TracerOptions::extent); none once moveToFrame has moved an instance (the tracer's
@@ -36,8 +36,8 @@ struct PreparedScene {
 PreparedScene prepareScene(Scene scene, const GridOptions &options, const DiskCache *cache);
 
 // Moves the keyed instances (scene/placement_animation.h) to `frame` and builds the grid's level
-// they are in again, the prototypes' mesh grids kept (Grid::meshGrids); the extent is dropped. Returns whether any
-// instance moved, and so whether a tracer of the scene needs the new arrays
+// they are in again, the prototypes' mesh grids kept (Grid::meshGrids); the extent is dropped.
+// Returns whether any instance moved, and so whether a tracer of the scene needs the new arrays
 // (RayTracer::setScene); a scene without keyed placements, or a frame where none has moved
 // (held before the first key and after the last), costs nothing. `rebuildMs`, where given,
 // gets the build's time. Throws prism::Error as placementAt does.

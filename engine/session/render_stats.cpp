@@ -49,8 +49,7 @@ nlohmann::json sceneStats(const PreparedScene &prepared) {
               {"key_ms", cache.keyMs},
               {"read_ms", cache.readMs},
               {"store_ms", cache.storeMs}}},
-            // The tiles' extent, found as part of the build (PreparedScene::extent).
-            {"extent_cache",
+            {"extent_cache", // the tiles' extent, found with the grid (PreparedScene::extent)
              {{"state", prepared.extentCache.state}, {"ms", prepared.extentCache.ms}}}};
 }
 

@@ -1,6 +1,7 @@
 // The adaptive grid's structure: its cells tile the grid's box, the voxel map finds the cell
 // that holds a voxel, each cell lists exactly the primitives overlapping its box (a lean
-// grid's, those whose bounding box meets it), and it adapts to uneven scenes. (Walks against brute force: grid_walk_test.cpp.)
+// grid's, those whose bounding box meets it), and it adapts to uneven scenes. (Walks against brute
+// force: grid_walk_test.cpp.)
 #include <algorithm>
 #include <climits>
 #include <functional>

@@ -9,7 +9,7 @@
 #include "cache/blob.h"
 #include "cache/disk_cache.h"
 #include "grid_test_scenes.h"
-#include "temp_dir.h"
+#include "temp_cache.h"
 
 namespace prism {
 namespace {
@@ -28,12 +28,7 @@ Scene sceneWithInstances() {
     return scene;
 }
 
-struct CacheInTempDir {
-    test::TempDir dir;
-    std::vector<std::string> warnings;
-    DiskCache cache{DiskCacheOptions{dir.path(), uint64_t(1) << 30,
-                                     [this](const std::string &w) { warnings.push_back(w); }}};
-};
+using test::CacheInTempDir;
 
 TEST(GridCache, PackedGridsUnpackToTheSameArrays) {
     Scene scene = sceneWithInstances();

@@ -17,7 +17,7 @@
 #include "scene/scene_loader.h"
 #include "scene_builders.h"
 #include "session/prepared_scene.h"
-#include "temp_dir.h"
+#include "temp_cache.h"
 #include "test_scenes.h"
 
 namespace prism {
@@ -44,12 +44,7 @@ void expectSameExtent(const SceneExtent &a, const SceneExtent &b) {
     EXPECT_EQ(a.planes, b.planes);
 }
 
-struct CacheInTempDir {
-    test::TempDir dir;
-    std::vector<std::string> warnings;
-    DiskCache cache{DiskCacheOptions{dir.path(), uint64_t(1) << 30,
-                                     [this](const std::string &w) { warnings.push_back(w); }}};
-};
+using test::CacheInTempDir;
 
 TEST(ExtentCache, ASecondExtentIsReadBackAndEqualsTheFirst) {
     CacheInTempDir c;
