@@ -144,9 +144,8 @@ public:
                 options.writeAov = key.aov;
                 const std::optional<SceneExtent> &extent = prepared->extent;
                 options.extent = extent ? &*extent : nullptr;
-                tracer_ =
-                    std::make_unique<RayTracer>(*context_, prepared->scene,
-                                                prepared->grid, width, height, options);
+                tracer_ = std::make_unique<RayTracer>(*context_, prepared->scene, prepared->grid,
+                                                      width, height, options);
                 tracerMs = made.elapsedMs();
                 key_ = key;
                 keptScene_ = prepared; // the tracer's scene stays alive with it
