@@ -1,5 +1,6 @@
 // prism-render as a user meets it: help, errors with FILE:LINE, exit codes, no partial output,
 // the --stats line and the EXR it writes.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -7,7 +8,9 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -26,6 +29,18 @@ using prism::test::CliResult;
 
 CliResult run(const std::string &args) {
     return prism::test::runTool(PRISM_RENDER_EXE, args);
+}
+
+// The lines of a tool's output that hold every one of `words`.
+std::vector<std::string> linesWith(const std::string &out,
+                                   std::initializer_list<const char *> words) {
+    std::vector<std::string> found;
+    std::istringstream lines(out);
+    for (std::string line; std::getline(lines, line);)
+        if (std::all_of(words.begin(), words.end(),
+                        [&](const char *w) { return line.find(w) != std::string::npos; }))
+            found.push_back(line);
+    return found;
 }
 
 // Each test writes its scenes and images into a directory of its own.
@@ -52,7 +67,9 @@ TEST_F(PrismRenderCli, SceneErrorNamesFileAndLineAndWritesNothing) {
 
 // OpenImageIO's ~260 libraries are not mapped before prism-render needs them (0.3-0.5 s before
 // main, when it linked them): a refused output path never loads them; a render does, from
-// build/bin/libprism_oiio.so. The dynamic loader's own log (LD_DEBUG=files) says which it maps.
+// build/bin/libprism_oiio.so, each of OpenImageIO's own libraries loaded on its own before it
+// (io/late_oiio.cpp: 95-100 ms against 160-200 ms in one piece). The dynamic loader's own log
+// (LD_DEBUG=files) says which it maps, and what for.
 TEST_F(PrismRenderCli, OpenImageIOIsLoadedOnlyForARender) {
     std::string scene = std::string(PRISM_SCENES_DIR) + "/rand50.scene";
     auto mapped = [&](const std::string &out) {
@@ -69,6 +86,11 @@ TEST_F(PrismRenderCli, OpenImageIOIsLoadedOnlyForARender) {
     EXPECT_TRUE(fs::is_regular_file(dir() / "x.png"));
     EXPECT_NE(rendered.out.find("libprism_oiio.so"), std::string::npos) << "not loaded late";
     EXPECT_NE(rendered.out.find("libOpenImageIO"), std::string::npos);
+    EXPECT_EQ(linesWith(rendered.out, {"needed by", "/libOpenImageIO.so"}),
+              std::vector<std::string>{})
+        << "a library OpenImageIO needs was not loaded before it, on its own";
+    EXPECT_EQ(linesWith(rendered.out, {"file=libOpenImageIO_Util", "dynamically loaded by"}).size(),
+              1u);
 }
 
 // A bad output path fails before the scene is even read (issue 35: it used to be found after
