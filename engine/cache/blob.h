@@ -111,8 +111,13 @@ public:
             throw BlobFormatError("an array runs past the end of the entry");
         std::vector<T> v;
         reserveInHugePages(v, size_t(count));
-        v.resize(size_t(count));
         const char *from = take(size_t(count) * sizeof(T));
+        if (reinterpret_cast<uintptr_t>(from) % alignof(T) == 0) { // one pass: no zeros first
+            const T *first = reinterpret_cast<const T *>(from);
+            v.assign(first, first + count);
+            return v;
+        }
+        v.resize(size_t(count));
         if (count > 0) // an empty vector's data() may be null, which memcpy must not be given
             std::memcpy(v.data(), from, size_t(count) * sizeof(T));
         return v;

@@ -15,7 +15,8 @@ Scene farScene() {
                       "light 1000010.5 5 5\n"
                       "sphere 1000000.3 2 -1 0.5\n"
                       "plane 0 -1 0 0 1 0\n"
-                      "triangle 1000001 0 0 1000002 0 0 1000001 1 0\n",
+                      "triangle 1000001 0 0 1000002 0 0 1000001 1 0\n"
+                      "triangle 1000000.3 2.3 3.3 1000002 0 0 1000001 1 0\n",
                       "far.scene");
 }
 
@@ -49,6 +50,10 @@ TEST(SceneOrigin, CentringRoundsToTheFloatsTheGpuIsGiven) {
     EXPECT_EQ(x, double(float(x)));
     EXPECT_NEAR(x, 0.05, 1e-8); // a float at 1e6 would be 0.0625 off
     EXPECT_EQ(scene.origin, glm::dvec3(1000000.25, 2, 3));
+    // Each of a vertex's three components (GCC 12 once rounded only z of each: scene_origin.cpp),
+    // against constants: 0.0499999999302 and 0.2999999999999998 in double, these floats after.
+    EXPECT_EQ(scene.triangles[1].p[0], glm::dvec3(0.05f, 0.3f, 0.3f));
+    EXPECT_EQ(scene.triangles[1].p[1], glm::dvec3(1.75, -2, -3));
 }
 
 TEST(SceneOrigin, RecentringOnlyWhenFloatsGetCoarseForTheView) {
