@@ -3,13 +3,26 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/parallel_for.h"
+
 namespace prism {
 namespace {
 
+// Triangles a parallelFor index covers: enough that a chunk is worth a thread's start.
+constexpr size_t kChunk = 8192;
+
+template <typename Body> void forEachTriangle(size_t count, Body body) {
+    parallelFor((count + kChunk - 1) / kChunk, [&](size_t chunk) {
+        size_t end = std::min(count, (chunk + 1) * kChunk);
+        for (size_t i = chunk * kChunk; i < end; ++i)
+            body(i);
+    });
+}
+
 // The interior angle at corner c, from the edges to the other two corners.
-double cornerAngle(const SmoothingTriangle &t, int c) {
-    glm::dvec3 a = t.p[size_t((c + 1) % 3)] - t.p[size_t(c)];
-    glm::dvec3 b = t.p[size_t((c + 2) % 3)] - t.p[size_t(c)];
+double cornerAngle(const std::array<glm::dvec3, 3> &p, int c) {
+    glm::dvec3 a = p[size_t((c + 1) % 3)] - p[size_t(c)];
+    glm::dvec3 b = p[size_t((c + 2) % 3)] - p[size_t(c)];
     double la = glm::length(a), lb = glm::length(b);
     if (!(la > 0.0 && lb > 0.0))
         return 0.0;
@@ -19,27 +32,27 @@ double cornerAngle(const SmoothingTriangle &t, int c) {
 } // namespace
 
 std::vector<std::array<glm::vec3, 3>>
-smoothVertexNormals(const std::vector<SmoothingTriangle> &triangles, double creaseDegrees) {
+smoothVertexNormals(std::span<const glm::dvec3> positions,
+                    const std::vector<SmoothingTriangle> &triangles, double creaseDegrees) {
     size_t count = triangles.size();
     std::vector<glm::dvec3> facet(count);
     std::vector<std::array<double, 3>> angle(count);
-    uint32_t vertices = 0;
-    for (size_t i = 0; i < count; ++i) {
-        const SmoothingTriangle &t = triangles[i];
-        glm::dvec3 n = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
+    forEachTriangle(count, [&](size_t i) {
+        const std::array<uint32_t, 3> &v = triangles[i].vertex;
+        std::array<glm::dvec3, 3> p = {positions[v[0]], positions[v[1]], positions[v[2]]};
+        glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
         double length = glm::length(n);
         facet[i] = length > 0.0 ? n / length : glm::dvec3(0.0);
-        for (int c = 0; c < 3; ++c) {
-            angle[i][size_t(c)] = cornerAngle(t, c);
-            vertices = std::max(vertices, t.vertex[size_t(c)] + 1);
-        }
-    }
-    // Triangles around each vertex, as (triangle, corner) pairs in CSR form.
-    std::vector<uint32_t> start(size_t(vertices) + 1, 0);
+        for (int c = 0; c < 3; ++c)
+            angle[i][size_t(c)] = cornerAngle(p, c);
+    });
+    // Triangles around each vertex, as (triangle, corner) pairs in CSR form, each vertex's in
+    // the triangles' order.
+    std::vector<uint32_t> start(positions.size() + 1, 0);
     for (const SmoothingTriangle &t : triangles)
         for (uint32_t v : t.vertex)
             ++start[size_t(v) + 1];
-    for (size_t v = 0; v < vertices; ++v)
+    for (size_t v = 0; v < positions.size(); ++v)
         start[v + 1] += start[v];
     std::vector<std::pair<uint32_t, int>> around(start.back());
     std::vector<uint32_t> fill(start.begin(), start.end() - 1);
@@ -50,7 +63,7 @@ smoothVertexNormals(const std::vector<SmoothingTriangle> &triangles, double crea
     // Facets meet at no more than the crease angle when their normals' cosine is at least this.
     double minCosine = std::cos(glm::radians(std::clamp(creaseDegrees, 0.0, 180.0)));
     std::vector<std::array<glm::vec3, 3>> normals(count);
-    for (size_t i = 0; i < count; ++i) {
+    forEachTriangle(count, [&](size_t i) {
         for (int c = 0; c < 3; ++c) {
             uint32_t v = triangles[i].vertex[size_t(c)];
             glm::dvec3 sum(0.0);
@@ -66,7 +79,7 @@ smoothVertexNormals(const std::vector<SmoothingTriangle> &triangles, double crea
             // neighbours cancel out is there no direction: then the facet's own normal.
             normals[i][size_t(c)] = glm::vec3(length > 0.0 ? sum / length : facet[i]);
         }
-    }
+    });
     return normals;
 }
 
