@@ -36,19 +36,22 @@ std::filesystem::path pluginPath() {
 // 150,000 lookups, almost all of its own symbols) sit deep in it: 160-200 ms here, most of it
 // in the loader's lookup. Loaded leaves first, a library's own symbols come first in its own
 // scope, and the same load takes 95-100 ms; the loader's lock is also let go between libraries,
-// so a Vulkan driver on another thread waits for one library, not all of them. A library that
-// will not load is left for the plugin's own `dlopen` to report. Only references to code
-// defined twice bind otherwise (templates two libraries both instantiate; BLAS's `xerbla_`
-// and NetCDF's `strlcat` their own): each library binds as it would linked alone (design.md).
+// so a Vulkan driver on another thread waits for one library, not all of them. RTLD_NOW, as
+// the plugin is loaded: a library that cannot bind alone (one using a symbol of a library it
+// does not name) is not kept half-bound but loaded later as another's dependency, and one that
+// is missing is named by the plugin's own `dlopen`. Only references to code defined twice bind
+// otherwise (templates two libraries both instantiate; BLAS's `xerbla_` and NetCDF's
+// `strlcat` their own): each library binds as it would linked alone (design.md).
 void loadImageLibrariesLeavesFirst() {
     for (const char *const *name = kOiioLibrariesLeavesFirst; *name; ++name)
-        dlopen(*name, RTLD_LAZY | RTLD_LOCAL); // kept loaded, as the plugin keeps them
+        dlopen(*name, RTLD_NOW | RTLD_LOCAL); // kept loaded, as the plugin keeps them
 }
 
 const OiioPluginTable &plugin() {
     static const OiioPluginTable *table = [] {
-        loadImageLibrariesLeavesFirst();
         std::filesystem::path path = pluginPath();
+        if (std::filesystem::exists(path)) // else its `dlopen` says so, with nothing loaded
+            loadImageLibrariesLeavesFirst();
         void *library = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (!library)
             throw Error(std::string("cannot load Prism's image-file library (OpenImageIO): ") +

@@ -41,7 +41,13 @@ void moveAllButTriangles(Scene &scene, glm::dvec3 point) {
 // triangles; this stays inline, and the loop vectorises.
 inline double roundedToFloat(double x) {
     float f = float(x);
-    asm("" : "+x"(f));
+#if defined(__x86_64__) || defined(__i386__)
+    asm("" : "+x"(f)); // an SSE register
+#elif defined(__aarch64__)
+    asm("" : "+w"(f)); // a SIMD and floating-point register
+#else
+    asm("" : "+m"(f)); // through memory: slower, as sure
+#endif
     return double(f);
 }
 
@@ -52,12 +58,9 @@ glm::dvec3 asFloat(const glm::dvec3 &p) {
 // The scene's triangles moved by -point, and rounded to floats when `round`: in one pass, on
 // every core (1M triangles are 80 MB, read and written once).
 void moveTriangles(std::vector<Triangle> &triangles, glm::dvec3 point, bool round) {
-    constexpr size_t kChunk = 16384;
-    parallelFor((triangles.size() + kChunk - 1) / kChunk, [&](size_t chunk) {
-        size_t end = std::min(triangles.size(), (chunk + 1) * kChunk);
-        for (size_t i = chunk * kChunk; i < end; ++i)
-            for (glm::dvec3 &p : triangles[i].p)
-                p = round ? asFloat(p - point) : p - point;
+    parallelForInBlocks(triangles.size(), 16384, [&](size_t i) {
+        for (glm::dvec3 &p : triangles[i].p)
+            p = round ? asFloat(p - point) : p - point;
     });
 }
 

@@ -8,16 +8,8 @@
 namespace prism {
 namespace {
 
-// Triangles a parallelFor index covers: enough that a chunk is worth a thread's start.
-constexpr size_t kChunk = 8192;
-
-template <typename Body> void forEachTriangle(size_t count, Body body) {
-    parallelFor((count + kChunk - 1) / kChunk, [&](size_t chunk) {
-        size_t end = std::min(count, (chunk + 1) * kChunk);
-        for (size_t i = chunk * kChunk; i < end; ++i)
-            body(i);
-    });
-}
+// Triangles a parallelFor index covers: enough that a block is worth a thread's turn.
+constexpr size_t kBlock = 8192;
 
 // The interior angle at corner c, from the edges to the other two corners.
 double cornerAngle(const std::array<glm::dvec3, 3> &p, int c) {
@@ -37,7 +29,7 @@ smoothVertexNormals(std::span<const glm::dvec3> positions,
     size_t count = triangles.size();
     std::vector<glm::dvec3> facet(count);
     std::vector<std::array<double, 3>> angle(count);
-    forEachTriangle(count, [&](size_t i) {
+    parallelForInBlocks(count, kBlock, [&](size_t i) {
         const std::array<uint32_t, 3> &v = triangles[i].vertex;
         std::array<glm::dvec3, 3> p = {positions[v[0]], positions[v[1]], positions[v[2]]};
         glm::dvec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
@@ -63,7 +55,7 @@ smoothVertexNormals(std::span<const glm::dvec3> positions,
     // Facets meet at no more than the crease angle when their normals' cosine is at least this.
     double minCosine = std::cos(glm::radians(std::clamp(creaseDegrees, 0.0, 180.0)));
     std::vector<std::array<glm::vec3, 3>> normals(count);
-    forEachTriangle(count, [&](size_t i) {
+    parallelForInBlocks(count, kBlock, [&](size_t i) {
         for (int c = 0; c < 3; ++c) {
             uint32_t v = triangles[i].vertex[size_t(c)];
             glm::dvec3 sum(0.0);

@@ -113,7 +113,7 @@ TEST(VertexNormals, RepeatedVerticesAreWeldedByPosition) {
 // The passes over triangles run on every core; each triangle's normals are its own sums in
 // one order, so the thread count changes nothing, to the bit.
 TEST(VertexNormals, TheSameNormalsOnAnyNumberOfThreads) {
-    constexpr uint32_t kSide = 120; // 28,322 triangles: several chunks of the parallel passes
+    constexpr uint32_t kSide = 120; // 28,800 triangles: several chunks of the parallel passes
     std::vector<glm::dvec3> positions;
     for (uint32_t z = 0; z <= kSide; ++z)
         for (uint32_t x = 0; x <= kSide; ++x)

@@ -91,6 +91,16 @@ TEST_F(PrismRenderCli, OpenImageIOIsLoadedOnlyForARender) {
         << "a library OpenImageIO needs was not loaded before it, on its own";
     EXPECT_EQ(linesWith(rendered.out, {"file=libOpenImageIO_Util", "dynamically loaded by"}).size(),
               1u);
+    // From the first library loaded on its own to the plugin, hardly any loads as another's
+    // dependency: the few that cannot load alone (they use a symbol of a library they do not
+    // name) and theirs. Loaded in ldd's order reversed, about 130 did; in one piece, all.
+    size_t first = rendered.out.find("dynamically loaded by " + std::string(PRISM_RENDER_EXE));
+    size_t plugin = rendered.out.find("file=libOpenImageIO.so");
+    ASSERT_NE(first, std::string::npos) << "no library loaded on its own";
+    ASSERT_LT(first, plugin);
+    std::vector<std::string> dependents =
+        linesWith(rendered.out.substr(first, plugin - first), {"needed by"});
+    EXPECT_LE(dependents.size(), 8u) << testing::PrintToString(dependents);
 }
 
 // A bad output path fails before the scene is even read (issue 35: it used to be found after
