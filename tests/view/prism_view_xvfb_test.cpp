@@ -358,6 +358,25 @@ TEST_F(PrismViewXvfb, BenchmarkPrintsOneJsonLine) {
         EXPECT_NE(view.out.find(key), std::string::npos) << key << "\n" << view.out;
 }
 
+// OpenImageIO's ~260 libraries are mapped at the first texture or screenshot, not at the start
+// (0.2-0.4 s before the window when prism-view linked them): the dynamic loader's own log
+// (LD_DEBUG=files) says whether they were.
+TEST_F(PrismViewXvfb, OpenImageIOIsLoadedOnlyForATextureOrAScreenshot) {
+    fs::path scene = write("s.scene", "light 2 2 5\nsphere 0 0 0 1\n");
+    CliResult untextured =
+        run("LD_DEBUG=files " + underXvfb(scene.string() + " --size 64x48 --benchmark 2"));
+    ASSERT_EQ(viewExit(untextured), 0) << untextured.out;
+    EXPECT_EQ(untextured.out.find("libOpenImageIO"), std::string::npos)
+        << "OpenImageIO was loaded for a view that reads and writes no image";
+    fs::path shot = dir_ / "shot.png";
+    CliResult screenshot =
+        run("LD_DEBUG=files " + underXvfb(scene.string() + " --size 64x48 --spp 1 " +
+                                          "--script-frames 2 --screenshot " + shot.string()));
+    ASSERT_EQ(viewExit(screenshot), 0) << screenshot.out;
+    EXPECT_TRUE(fs::is_regular_file(shot));
+    EXPECT_NE(screenshot.out.find("libprism_oiio.so"), std::string::npos) << "not loaded late";
+}
+
 TEST_F(PrismViewXvfb, ErrorsSayWhatIsWrong) {
     fs::path broken = write("broken.scene", "sphere 0 0 0\n");
     CliResult scene = run(underXvfb(broken.string()));
