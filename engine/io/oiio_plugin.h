@@ -4,8 +4,9 @@
 // libraries that take 0.4-1 s to map and relocate; a front end that may never read or write an
 // image file (the Python module: `import prism` and renders of untextured scenes) links
 // prism_oiio_late instead of prism_oiio and loads the library at its first call
-// (io/late_oiio.cpp). So does prism-render, which loads it on a thread of its own while the
-// scene loads (preloadImageFiles); the other tools link prism_oiio and call it directly.
+// (io/late_oiio.cpp). So do prism-render, which loads it on a thread of its own while the
+// scene loads (preloadImageFiles), prism-merge and prism-view; prism-bench and prism-gridbench
+// link prism_oiio and call it directly.
 #include <cstdint>
 #include <filesystem>
 #include <string>
